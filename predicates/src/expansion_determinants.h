@@ -1,0 +1,49 @@
+// Exact determinants of raw (untranslated) coordinates in expansion arithmetic: the
+// building blocks of the exact stages (private to the kernel).
+//
+// Rows are points, columns are coordinates, possibly the lifted |p|^2, and a column of
+// ones. Subtracting one row from the others shows these equal the translated determinants
+// of the public contracts (orient2d.h, ..., insphere.h). Raw coordinates keep every
+// product a product of input doubles, which keeps expansions short; the translated form
+// is used only when every difference is exact (expansion_safe decides the range).
+#pragma once
+
+#include "certimesh/predicates/detail/expansion.h"
+
+namespace certimesh::predicates::detail {
+
+/// ui*vj - uj*vi.
+inline Expansion<4> minor2(double ui, double vi, double uj, double vj) noexcept {
+  return exact_product(ui, vj) - exact_product(uj, vi);
+}
+
+/// det[ui vi 1; uj vj 1; uk vk 1], expanded along the column of ones.
+inline Expansion<12> minor3_with_ones(double ui, double vi, double uj, double vj, double uk,
+                                      double vk) noexcept {
+  return (minor2(uj, vj, uk, vk) - minor2(ui, vi, uk, vk)) + minor2(ui, vi, uj, vj);
+}
+
+/// |p|^2 for a 2D point.
+inline Expansion<4> lift2(double x, double y) noexcept {
+  return exact_product(x, x) + exact_product(y, y);
+}
+
+/// |p|^2 for a 3D point.
+inline Expansion<6> lift3(double x, double y, double z) noexcept {
+  return (exact_product(x, x) + exact_product(y, y)) + exact_product(z, z);
+}
+
+struct Raw3 {
+  double x, y, z;
+};
+
+/// det[x y z 1] of four points, expanded along the z column.
+inline Expansion<96> det4_xyz1(const Raw3& a, const Raw3& b, const Raw3& c, const Raw3& d) noexcept {
+  const auto m_bcd = minor3_with_ones(b.x, b.y, c.x, c.y, d.x, d.y);
+  const auto m_acd = minor3_with_ones(a.x, a.y, c.x, c.y, d.x, d.y);
+  const auto m_abd = minor3_with_ones(a.x, a.y, b.x, b.y, d.x, d.y);
+  const auto m_abc = minor3_with_ones(a.x, a.y, b.x, b.y, c.x, c.y);
+  return (scale(m_bcd, a.z) - scale(m_acd, b.z)) + (scale(m_abd, c.z) - scale(m_abc, d.z));
+}
+
+}  // namespace certimesh::predicates::detail
