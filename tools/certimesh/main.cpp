@@ -1,0 +1,104 @@
+// certimesh: the command-line tool. Subcommands: demo, predicates. See --help.
+#include <cstdio>
+#include <cstring>
+#include <string>
+#include <string_view>
+
+#include "cli.h"
+
+#ifndef CERTIMESH_VERSION
+#define CERTIMESH_VERSION "unknown"
+#endif
+
+namespace {
+
+constexpr const char* kHelp =
+    "usage: certimesh <command> [options]\n"
+    "\n"
+    "commands:\n"
+    "  demo                 naive floating point against certimesh on the classroom\n"
+    "                       robustness examples; every answer re-checked with GMP\n"
+    "  predicates [--mode exact|filter|sos] [--line-buffered]\n"
+    "                       batch predicates: one query per stdin line, one answer per\n"
+    "                       stdout line (default mode: exact)\n"
+    "  --help, -h           this text\n"
+    "  --version            the version\n"
+    "\n"
+    "predicates input, one query per line (numbers: decimal or C99 hex float, e.g. 0x1.8p-3,\n"
+    "parsed exactly; nan, inf and out-of-range values like 1e400 are refused):\n"
+    "  orient2d  ax ay bx by cx cy                     -> -1 | 0 | 1\n"
+    "  orient3d  a b c d        (4 points x y z)       -> -1 | 0 | 1\n"
+    "  incircle  a b c d        (4 points x y)         -> -1 | 0 | 1\n"
+    "  insphere  a b c d e      (5 points x y z)       -> -1 | 0 | 1\n"
+    "  seg_seg2d s0 s1 t0 t1    (2D segment, segment)  -> intersect | disjoint\n"
+    "  tri_seg2d t0 t1 t2 s0 s1 (2D triangle, segment) -> intersect | disjoint\n"
+    "  tri_seg3d t0 t1 t2 s0 s1 (3D triangle, segment) -> intersect | disjoint\n"
+    "  tet_tri   a b c d t0 t1 t2 (3D)                 -> intersect | disjoint\n"
+    "  tri_tri3d t0 t1 t2 u0 u1 u2 (3D)                -> intersect | disjoint\n"
+    "modes: exact = exact signs; filter = the floating-point filter only, `?` when uncertain,\n"
+    "  and the conservative intersection tests (they err only towards `intersect`);\n"
+    "  sos = symbolically perturbed signs (0 only for repeated points), exact intersection.\n"
+    "Points of one line with identical coordinates are the same vertex.\n"
+    "Blank lines and `#` comments are skipped. A malformed line prints `error: line N: why`\n"
+    "on stderr and nothing on stdout; processing continues.\n"
+    "\n"
+    "exit status: 0 success; 1 some input line was rejected (predicates) or the demo found a\n"
+    "disagreement; 2 usage error.\n";
+
+int usage_error(const char* fmt, const char* arg) {
+  std::fputs("error: ", stderr);
+  std::fprintf(stderr, fmt, arg);
+  std::fputs(" (see certimesh --help)\n", stderr);
+  return 2;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  if (argc < 2) {
+    std::fputs(kHelp, stderr);
+    return 2;
+  }
+  const std::string_view command = argv[1];
+  if (command == "--help" || command == "-h" || command == "help") {
+    std::fputs(kHelp, stdout);
+    return 0;
+  }
+  if (command == "--version") {
+    std::printf("certimesh %s\n", CERTIMESH_VERSION);
+    return 0;
+  }
+  if (command == "demo") {
+    if (argc > 2) return usage_error("demo takes no arguments, got '%s'", argv[2]);
+    return certimesh::cli::run_demo();
+  }
+  if (command == "predicates") {
+    certimesh::cli::BatchOptions options;
+    for (int i = 2; i < argc; ++i) {
+      const std::string_view arg = argv[i];
+      std::string_view value;
+      if (arg == "--mode" && i + 1 < argc) {
+        value = argv[++i];
+      } else if (arg.starts_with("--mode=")) {
+        value = arg.substr(7);
+      } else if (arg == "--line-buffered") {
+        options.line_buffered = true;
+        continue;
+      } else {
+        return usage_error("predicates: unknown option '%s'", argv[i]);
+      }
+      if (value == "exact") {
+        options.mode = certimesh::cli::BatchMode::exact;
+      } else if (value == "filter") {
+        options.mode = certimesh::cli::BatchMode::filter;
+      } else if (value == "sos") {
+        options.mode = certimesh::cli::BatchMode::sos;
+      } else {
+        return usage_error("predicates: --mode must be exact, filter or sos, got '%s'",
+                           std::string(value).c_str());
+      }
+    }
+    return certimesh::cli::run_batch(options);
+  }
+  return usage_error("unknown command '%s'", argv[1]);
+}
