@@ -23,12 +23,12 @@
 #include "certimesh/predicates/orient3d.h"
 #include "cli.h"
 
-#if __has_include("certimesh/predicates/intersection/segment_segment_2d.h") &&  \
-    __has_include("certimesh/predicates/intersection/triangle_segment_2d.h") && \
-    __has_include("certimesh/predicates/intersection/triangle_segment_3d.h") && \
-    __has_include("certimesh/predicates/intersection/tetrahedron_triangle.h") && \
-    __has_include("certimesh/predicates/intersection/triangle_triangle_3d.h")
-#define CERTIMESH_CLI_HAS_INTERSECTION 1
+// The intersection commands need the kernel's intersection tests; tools/certimesh/CMakeLists.txt
+// sets CERTIMESH_CLI_HAS_INTERSECTION when the predicates library builds them.
+#ifndef CERTIMESH_CLI_HAS_INTERSECTION
+#define CERTIMESH_CLI_HAS_INTERSECTION 0
+#endif
+#if CERTIMESH_CLI_HAS_INTERSECTION
 #include "certimesh/predicates/intersection/mode.h"
 #include "certimesh/predicates/intersection/segment_segment_2d.h"
 #include "certimesh/predicates/intersection/tetrahedron_triangle.h"
@@ -36,8 +36,6 @@
 #include "certimesh/predicates/intersection/triangle_segment_3d.h"
 #include "certimesh/predicates/intersection/triangle_triangle_3d.h"
 #include "certimesh/predicates/intersection/vertex.h"
-#else
-#define CERTIMESH_CLI_HAS_INTERSECTION 0
 #endif
 
 namespace certimesh::cli {
@@ -144,13 +142,13 @@ const char* sign_text(cp::FilteredSign s) {
   return "?";
 }
 
-// Vertex identity inside one line: points whose coordinates are bit-identical (after
-// mapping -0.0 to +0.0, the same coordinate) are the same vertex; the id of a point is the
-// index of the first point of the line equal to it.
+// Vertex identity inside one line: points whose coordinates are bit-identical are the same
+// vertex (so two elements of one line that repeat a point share that vertex); the id of a
+// point is the index of the first point of the line equal to it. Bit patterns, not ==:
+// -0.0 and +0.0 are two vertices at the same place, which touch (vertex.h).
 [[maybe_unused]] std::uint64_t coordinate_bits(double v) {
-  const double normalized = v + 0.0;  // -0.0 + 0.0 == +0.0 under round-to-nearest
   std::uint64_t bits = 0;
-  std::memcpy(&bits, &normalized, sizeof bits);
+  std::memcpy(&bits, &v, sizeof bits);
   return bits;
 }
 
