@@ -86,47 +86,124 @@ def oracle_sign(command, values):
     raise ValueError(command)
 
 
-# Independent exact intersection tests for closed simplices in general position with
-# respect to vertex sharing (no two input points equal): used only for such lines.
-def orient2(a, b, c):
-    return sign(det([diff(a, c), diff(b, c)]))
+# Independent exact intersection oracle: two elements (convex hulls of their points)
+# intersect beyond their shared vertices S (same coordinates, bit for bit, in both) when
+# some point x = sum l_i a_i = sum m_j b_j (l, m >= 0, sum l = sum m = 1) lies outside
+# conv(S). When A's points are affinely independent, conv(S) is the face of A where the
+# weights of A's other vertices vanish, so the test is: max sum_{i not in S} l_i > 0, an
+# exact linear program (rational simplex, Bland's rule).
+def simplex_max(A, b, c):
+    """max c.x subject to A x = b, x >= 0 (exact). None when infeasible; the problems here
+    are bounded."""
+    m, n = len(A), len(A[0])
+    T = []
+    for i in range(m):
+        row, rhs = [Fraction(v) for v in A[i]], Fraction(b[i])
+        if rhs < 0:
+            row, rhs = [-v for v in row], -rhs
+        T.append(row + [Fraction(int(k == i)) for k in range(m)] + [rhs])
+    basis = [n + i for i in range(m)]
+
+    def run(cost, allowed):
+        while True:
+            entering = None
+            for j in range(allowed):
+                if j in basis:
+                    continue
+                reduced = cost[j] - sum(cost[basis[i]] * T[i][j] for i in range(m))
+                if reduced > 0:
+                    entering = j
+                    break
+            if entering is None:
+                return
+            best = None
+            for i in range(m):
+                if T[i][entering] > 0:
+                    ratio = T[i][-1] / T[i][entering]
+                    if best is None or ratio < best[0] or (ratio == best[0] and basis[i] < basis[best[1]]):
+                        best = (ratio, i)
+            if best is None:
+                raise ValueError("unbounded")
+            r = best[1]
+            pivot = T[r][entering]
+            T[r] = [v / pivot for v in T[r]]
+            for i in range(m):
+                if i != r and T[i][entering] != 0:
+                    f = T[i][entering]
+                    T[i] = [v - f * w for v, w in zip(T[i], T[r])]
+            basis[r] = entering
+
+    # Phase 1: maximize -(sum of artificials).
+    run([Fraction(0)] * n + [Fraction(-1)] * m, n + m)
+    if any(basis[i] >= n and T[i][-1] != 0 for i in range(m)):
+        return None
+    # Drive zero artificials out of the basis where possible, then phase 2 on originals.
+    for i in range(m):
+        if basis[i] >= n:
+            for j in range(n):
+                if j not in basis and T[i][j] != 0:
+                    pivot = T[i][j]
+                    T[i] = [v / pivot for v in T[i]]
+                    for k in range(m):
+                        if k != i and T[k][j] != 0:
+                            f = T[k][j]
+                            T[k] = [v - f * w for v, w in zip(T[k], T[i])]
+                    basis[i] = j
+                    break
+    cost = [Fraction(v) for v in c] + [Fraction(0)] * m
+    run(cost, n)
+    return sum(cost[basis[i]] * T[i][-1] for i in range(m))
 
 
-def on_segment_collinear(p, a, b):
-    return min(a[0], b[0]) <= p[0] <= max(a[0], b[0]) and min(a[1], b[1]) <= p[1] <= max(a[1], b[1])
+def affinely_independent(pts):
+    rows = [diff(p, pts[0]) for p in pts[1:]]
+    rank, rows = 0, [r[:] for r in rows]
+    cols = len(pts[0])
+    for col in range(cols):
+        piv = next((i for i in range(rank, len(rows)) if rows[i][col] != 0), None)
+        if piv is None:
+            continue
+        rows[rank], rows[piv] = rows[piv], rows[rank]
+        for i in range(len(rows)):
+            if i != rank and rows[i][col] != 0:
+                f = rows[i][col] / rows[rank][col]
+                rows[i] = [a - f * b for a, b in zip(rows[i], rows[rank])]
+        rank += 1
+    return rank == len(pts) - 1
 
 
-def seg_seg(a, b, c, d):
-    o1, o2, o3, o4 = orient2(a, b, c), orient2(a, b, d), orient2(c, d, a), orient2(c, d, b)
-    if o1 * o2 < 0 and o3 * o4 < 0:
-        return True
-    return ((o1 == 0 and on_segment_collinear(c, a, b)) or (o2 == 0 and on_segment_collinear(d, a, b))
-            or (o3 == 0 and on_segment_collinear(a, c, d)) or (o4 == 0 and on_segment_collinear(b, c, d)))
-
-
-def in_triangle(p, a, b, c):
-    s = orient2(a, b, c)
-    if s == 0:
-        return False
-    return all(orient2(*e, p) * s >= 0 for e in ((a, b), (b, c), (c, a)))
-
-
-def tri_seg_2d(a, b, c, p, q):
-    if orient2(a, b, c) == 0:  # degenerate triangle: the union of its edges
-        return any(seg_seg(u, v, p, q) for u, v in ((a, b), (b, c), (c, a)))
-    if in_triangle(p, a, b, c) or in_triangle(q, a, b, c):
-        return True
-    return any(seg_seg(u, v, p, q) for u, v in ((a, b), (b, c), (c, a)))
+def hulls_intersect_beyond_shared(a_raw, b_raw, dim):
+    """a_raw, b_raw: lists of float tuples. True/False, or None when both are degenerate."""
+    def key(p):
+        return tuple(v.hex() for v in p)
+    A = [tuple(Fraction(v) for v in p) for p in a_raw]
+    B = [tuple(Fraction(v) for v in p) for p in b_raw]
+    shared = set(map(key, a_raw)) & set(map(key, b_raw))
+    if affinely_independent(A):
+        first, first_raw, second = A, a_raw, B
+    elif affinely_independent(B):
+        first, first_raw, second = B, b_raw, A
+    else:
+        if shared:
+            return None
+        first, first_raw, second = A, a_raw, B  # no shared vertices: plain closed hulls
+    na, nb = len(first), len(second)
+    rows = [[Fraction(1)] * na + [Fraction(0)] * nb, [Fraction(0)] * na + [Fraction(1)] * nb]
+    for k in range(dim):
+        rows.append([p[k] for p in first] + [-q[k] for q in second])
+    rhs = [1, 1] + [0] * dim
+    if not shared:
+        return simplex_max(rows, rhs, [0] * (na + nb)) is not None
+    objective = [0 if key(p) in shared else 1 for p in first_raw] + [0] * nb
+    best = simplex_max(rows, rhs, objective)
+    return best is not None and best > 0
 
 
 def oracle_intersection(command, values):
-    if command == "seg_seg2d":
-        a, b, c, d = points(values, 2)
-        return seg_seg(a, b, c, d)
-    if command == "tri_seg2d":
-        a, b, c, p, q = points(values, 2)
-        return tri_seg_2d(a, b, c, p, q)
-    return None  # no independent oracle here: metamorphic checks only
+    npoints, dim = INTERSECTIONS[command]
+    first = {"seg_seg2d": 2, "tri_seg2d": 3, "tri_seg3d": 3, "tet_tri": 4, "tri_tri3d": 3}[command]
+    pts = [tuple(values[i:i + dim]) for i in range(0, len(values), dim)]
+    return hulls_intersect_beyond_shared(pts[:first], pts[first:], dim)
 
 
 PREDICATES = {"orient2d": (3, 2), "orient3d": (4, 3), "incircle": (4, 2), "insphere": (5, 3)}
@@ -225,8 +302,33 @@ def cocircular(rng, npoints, dim):
     return [float(v) * scale for p in pts for v in p]
 
 
+def intersection_values(rng, command):
+    npoints, dim = INTERSECTIONS[command]
+    first = {"seg_seg2d": 2, "tri_seg2d": 3, "tri_seg3d": 3, "tet_tri": 4, "tri_tri3d": 3}[command]
+    r = rng.random()
+    if r < 0.45:  # small integers: touching, overlapping and collinear/coplanar contacts
+        pts = [[float(rng.randint(-2, 2)) for _ in range(dim)] for _ in range(npoints)]
+    elif r < 0.65:
+        vals = near_degenerate(rng, npoints, dim)
+        pts = [vals[i:i + dim] for i in range(0, len(vals), dim)]
+    else:
+        scale = 2.0 ** rng.randint(-40, 40)
+        pts = [[rng.uniform(-1, 1) * scale for _ in range(dim)] for _ in range(npoints)]
+    if rng.random() < 0.35:  # share one or two vertices between the elements
+        for _ in range(rng.randint(1, 2)):
+            i, j = rng.randrange(first), rng.randrange(first, npoints)
+            pts[j] = list(pts[i])
+    if rng.random() < 0.15:  # nudge one point by an ulp
+        p = rng.choice(pts)
+        k = rng.randrange(dim)
+        p[k] = ulps(p[k], rng.choice([-1, 1]))
+    return [v for p in pts for v in p]
+
+
 def valid_values(rng, command):
     npoints, dim = {**PREDICATES, **INTERSECTIONS}[command]
+    if command in INTERSECTIONS:
+        return intersection_values(rng, command)
     r = rng.random()
     if r < 0.35:
         return near_degenerate(rng, npoints, dim)
@@ -382,7 +484,7 @@ def test_oracle(certimesh, count):
             # conservative: may err only towards "intersect" (second-type errors forbidden)
             check(not (fi == "disjoint" and ex == "intersect"),
                   "filter %s: disjoint but exactly intersecting" % where)
-            if distinct_points(values, dim):
+            if True:
                 want = oracle_intersection(command, values)
                 if want is not None:
                     intersect_checked += 1
