@@ -6,31 +6,34 @@
 #                     `no-sanitize` are left out, see CERTIMESH_ASAN_EXCLUDE below)
 # Stops at the first failing stage; the exit status is that stage's. ctest's summary is the
 # last thing printed. Environment: CERTIMESH_JOBS (default: nproc), CERTIMESH_SKIP_ASAN=1
-# to run stage 1 only, CERTIMESH_ASAN_EXCLUDE (a ctest label regex).
+# to run stage 1 only, CERTIMESH_ASAN_EXCLUDE (a ctest label regex), CERTIMESH_BUILD_DIR and
+# CERTIMESH_ASAN_BUILD_DIR (default build, build-asan).
 set -euo pipefail
 root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 cd "$root"
 
 bash scripts/install-deps.sh
 jobs=${CERTIMESH_JOBS:-$(nproc)}
+build=${CERTIMESH_BUILD_DIR:-build}
+asan=${CERTIMESH_ASAN_BUILD_DIR:-build-asan}
 stamp() { echo "== $(date -u +%H:%M:%S) $*"; }
 
-stamp "stage 1: build/ (Release, -Werror)"
-cmake -S . -B build -DCMAKE_BUILD_TYPE=Release -DCERTIMESH_WERROR=ON
-cmake --build build -j"$jobs"
+stamp "stage 1: $build/ (Release, -Werror)"
+cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=Release -DCERTIMESH_WERROR=ON
+cmake --build "$build" -j"$jobs"
 if [[ "${CERTIMESH_SKIP_ASAN:-0}" == 1 ]]; then
   stamp "stage 1: ctest"
-  exec ctest --test-dir build --output-on-failure -j"$jobs"
+  exec ctest --test-dir "$build" --output-on-failure -j"$jobs"
 fi
 stamp "stage 1: ctest"
-ctest --test-dir build --output-on-failure -j"$jobs"
+ctest --test-dir "$build" --output-on-failure -j"$jobs"
 
-stamp "stage 2: build-asan/ (ASan + UBSan)"
-cmake -S . -B build-asan -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCERTIMESH_SANITIZE=ON \
+stamp "stage 2: $asan/ (ASan + UBSan)"
+cmake -S . -B "$asan" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCERTIMESH_SANITIZE=ON \
       -DCERTIMESH_BUILD_BENCHMARKS=OFF
-cmake --build build-asan -j"$jobs"
+cmake --build "$asan" -j"$jobs"
 export ASAN_OPTIONS=${ASAN_OPTIONS:-abort_on_error=0:detect_stack_use_after_return=1:strict_string_checks=1}
 export UBSAN_OPTIONS=${UBSAN_OPTIONS:-print_stacktrace=1:halt_on_error=1}
 stamp "stage 2: ctest under sanitizers"
-exec ctest --test-dir build-asan --output-on-failure -j"$jobs" \
+exec ctest --test-dir "$asan" --output-on-failure -j"$jobs" \
      --label-exclude "${CERTIMESH_ASAN_EXCLUDE:-^(slow|no-sanitize)$}"
