@@ -50,6 +50,7 @@ Overlap triangle_segment_no_shared(const std::array<Point2, 3>& tri, const Point
 template <class Sg>
 Overlap triangle_segment_one_shared(const Point2& v, const Point2& a, const Point2& b,
                                     const Point2& w) {
+  if (w == v) return Overlap::disjoint;  // the segment is the shared point itself
   const int o = Sg::o2(v, a, b);
   if (o == 0) return Overlap::intersect;
   const Point2& first = o > 0 ? a : b;  // (v, first, last) counterclockwise

@@ -65,6 +65,7 @@ Overlap triangle_segment_3d_no_shared(const std::array<Point3, 3>& t, const Poin
 template <class Sg>
 Overlap triangle_segment_3d_one_shared(const Point3& v, const Point3& a, const Point3& b,
                                        const Point3& w) {
+  if (w == v) return Overlap::disjoint;  // the segment is the shared point itself
   // w strictly off the plane: the segment meets the plane, hence the triangle, at v only.
   if (Sg::o3(v, a, b, w) != 0) return Overlap::disjoint;
   for (int k = 0; k < 3; ++k) {

@@ -7,6 +7,8 @@
 
 #include <cstdint>
 
+#include "certimesh/predicates/non_finite_input.h"
+
 namespace certimesh::predicates {
 
 enum class IntersectionMode : std::uint8_t {
