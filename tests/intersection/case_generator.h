@@ -23,12 +23,16 @@ enum class PoolKind : int {
   nudged,         // derived, then some points moved by one ulp (near-degenerate)
   planar,         // derived, all in the plane z = x + y (exact): coplanar pairs in 3D
   offset_random,  // uniform in [-1, 1] around (1000, 1000, 1000): filters less certain
+  line,           // exact points of one line (and one point off it): degenerate elements
+  few_points,     // three small-integer points and copies: repeated coordinates everywhere
+  scaled,         // derived, times 2^600 or 2^-600: the kernel's range fallbacks
   count
 };
 
 inline const char* name(PoolKind k) {
   static const char* names[] = {"random_unit", "small_integer", "derived",
-                                "nudged",      "planar",        "offset_random"};
+                                "nudged",      "planar",        "offset_random",
+                                "line",        "few_points",    "scaled"};
   return names[static_cast<int>(k)];
 }
 
@@ -49,6 +53,17 @@ class CaseGenerator {
       case PoolKind::small_integer:
         for (int i = 0; i < 7; ++i) p.push_back({small(), small(), small()});
         return p;
+      case PoolKind::line: {
+        const Point3 a{small(), small(), small()}, b{small(), small(), small()};
+        for (double t : {-1.0, 0.0, 0.25, 0.5, 1.0, 2.0, 0.5})
+          p.push_back({a.x + t * (b.x - a.x), a.y + t * (b.y - a.y), a.z + t * (b.z - a.z)});
+        p.push_back({small(), small(), small()});
+        return p;
+      }
+      case PoolKind::few_points:
+        for (int i = 0; i < 3; ++i) p.push_back({small(), small(), small()});
+        for (int i = 0; i < 5; ++i) p.push_back(p[index(3)]);
+        return p;
       default: break;
     }
     for (int i = 0; i < 4; ++i) p.push_back({small(), small(), small()});
@@ -57,6 +72,10 @@ class CaseGenerator {
       for (Point3& q : p) q.z = q.x + q.y;
     if (kind == PoolKind::nudged)
       for (int i = 0; i < 3; ++i) nudge(p[index(p.size())]);
+    if (kind == PoolKind::scaled) {
+      const int e = chance(0.5) ? 600 : -600;
+      for (Point3& q : p) q = {std::ldexp(q.x, e), std::ldexp(q.y, e), std::ldexp(q.z, e)};
+    }
     return p;
   }
 
@@ -69,11 +88,15 @@ class CaseGenerator {
     std::vector<int> b(a.begin(), a.begin() + std::min(shared, std::min(na, nb)));
     for (std::size_t i = static_cast<std::size_t>(na); b.size() < static_cast<std::size_t>(nb); ++i)
       b.push_back(all[i % pool_size]);
-    if (chance(0.03)) a[0] = a[a.size() - 1];  // the same id twice within one element
+    repeated_id_ = chance(0.03);
+    if (repeated_id_) a[0] = a[a.size() - 1];  // the same id twice within one element
     std::shuffle(a.begin(), a.end(), rng_);
     std::shuffle(b.begin(), b.end(), rng_);
     return {a, b};
   }
+
+  /// Whether the last pick repeated an id within the first element.
+  bool repeated_id() const { return repeated_id_; }
 
   int shared_count(int max) { return std::uniform_int_distribution<int>(0, max)(rng_); }
   bool chance(double p) { return std::bernoulli_distribution(p)(rng_); }
@@ -111,6 +134,7 @@ class CaseGenerator {
   }
 
   std::mt19937_64 rng_;
+  bool repeated_id_ = false;
 };
 
 template <std::size_t N>

@@ -54,8 +54,10 @@ struct Tally {
   long cases = 0, truth_intersect = 0, mismatches = 0, second_type = 0, first_type = 0;
   std::string first_failure;
   // First-type errors per pool kind and per number of shared ids: {disjoint pairs, errors}.
+  // Elements with a repeated id are degenerate by construction: counted apart.
   int kind = 0, shared = 0;
-  std::array<std::array<long, 2>, static_cast<int>(PoolKind::count)> by_kind{};
+  bool repeated = false;
+  std::array<std::array<long, 2>, static_cast<int>(PoolKind::count) + 1> by_kind{};
   std::array<std::array<long, 2>, 4> by_shared{};
 
   void add(bool truth, Overlap exact, Overlap conservative, const std::string& what) {
@@ -66,8 +68,9 @@ struct Tally {
     if (truth && !c) ++second_type;
     if (!truth && c) ++first_type;
     if (!truth) {
-      by_kind[static_cast<std::size_t>(kind)][0]++;
-      by_kind[static_cast<std::size_t>(kind)][1] += c;
+      const std::size_t k = repeated ? by_kind.size() - 1 : static_cast<std::size_t>(kind);
+      by_kind[k][0]++;
+      by_kind[k][1] += c;
       by_shared[static_cast<std::size_t>(shared)][0]++;
       by_shared[static_cast<std::size_t>(shared)][1] += c;
     }
@@ -88,8 +91,9 @@ struct Tally {
       return r[0] ? 100.0 * static_cast<double>(r[1]) / static_cast<double>(r[0]) : 0.0;
     };
     std::printf("    first-type %% by pool:");
-    for (std::size_t k = 0; k < by_kind.size(); ++k)
+    for (std::size_t k = 0; k + 1 < by_kind.size(); ++k)
       std::printf(" %s %.2f%%;", name(static_cast<PoolKind>(k)), rate(by_kind[k]));
+    std::printf(" repeated id %.2f%%;", rate(by_kind.back()));
     std::printf("\n    first-type %% by shared ids:");
     for (std::size_t k = 0; k < by_shared.size(); ++k)
       if (by_shared[k][0]) std::printf(" %zu: %.2f%% of %ld;", k, rate(by_shared[k]), by_shared[k][0]);
@@ -111,6 +115,7 @@ void campaign(const char* test, long cases, std::uint64_t salt, int na, int nb, 
     const auto idx = gen.pick(pool.size(), na, nb, shared);
     tally.kind = static_cast<int>(kind);
     tally.shared = shared;
+    tally.repeated = gen.repeated_id();
     one(pool, idx, tally, std::string(name(kind)) + " case " + std::to_string(i));
   }
   tally.report(test);

@@ -4,9 +4,9 @@
 // with a shared vertex go to the exact fallback (exact_fallback.h) instead.
 #pragma once
 
-#include <algorithm>
 #include <array>
 
+#include "bounding_box.h"
 #include "certimesh/predicates/intersection/mode.h"
 #include "certimesh/predicates/intersection/vertex.h"
 #include "shared_vertices.h"
@@ -19,14 +19,6 @@ template <class Sg>
 bool strictly_one_side(const Point2& a, const Point2& b, const Point2& p, const Point2& q) {
   const int sp = Sg::o2(a, b, p);
   return sp != 0 && Sg::o2(a, b, q) == sp;
-}
-
-/// A coordinate line strictly between the two bounding boxes (exact comparisons).
-inline bool boxes_apart(const Point2& s0, const Point2& s1, const Point2& t0, const Point2& t1) {
-  const auto apart = [](double a0, double a1, double b0, double b1) {
-    return std::max(a0, a1) < std::min(b0, b1) || std::max(b0, b1) < std::min(a0, a1);
-  };
-  return apart(s0.x, s1.x, t0.x, t1.x) || apart(s0.y, s1.y, t0.y, t1.y);
 }
 
 /// p and q strictly on opposite sides of a coordinate line through v.
@@ -53,7 +45,7 @@ Overlap segment_segment_rules(const std::array<Vertex2, 2>& s, const std::array<
   }
   const Point2 &s0 = s[0].point, &s1 = s[1].point, &t0 = t[0].point, &t1 = t[1].point;
   if (strictly_one_side<Sg>(s0, s1, t0, t1) || strictly_one_side<Sg>(t0, t1, s0, s1) ||
-      boxes_apart(s0, s1, t0, t1))
+      boxes_apart(std::array{s0, s1}, std::array{t0, t1}))
     return Overlap::disjoint;
   return Overlap::intersect;
 }

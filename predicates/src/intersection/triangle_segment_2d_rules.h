@@ -10,6 +10,7 @@
 #include <array>
 
 #include "certimesh/predicates/intersection/mode.h"
+#include "bounding_box.h"
 #include "certimesh/predicates/intersection/vertex.h"
 #include "shared_vertices.h"
 #include "sign_source.h"
@@ -37,7 +38,8 @@ bool beyond_a_side(const std::array<Point2, 3>& ccw, const Point2& p, const Poin
 template <class Sg>
 Overlap triangle_segment_no_shared(const std::array<Point2, 3>& tri, const Point2& p,
                                    const Point2& q) {
-  if (triangle_beside_line<Sg>(tri, p, q)) return Overlap::disjoint;
+  const std::array<Point2, 2> seg{p, q};
+  if (boxes_apart(tri, seg) || triangle_beside_line<Sg>(tri, p, q)) return Overlap::disjoint;
   const int o = Sg::o2(tri[0], tri[1], tri[2]);
   if (o == 0) return Overlap::intersect;  // orientation unknown: no side certifies
   const std::array<Point2, 3> ccw = o > 0 ? tri : std::array<Point2, 3>{tri[0], tri[2], tri[1]};

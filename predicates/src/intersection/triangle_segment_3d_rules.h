@@ -12,6 +12,7 @@
 #include <array>
 
 #include "certimesh/predicates/intersection/mode.h"
+#include "bounding_box.h"
 #include "certimesh/predicates/intersection/vertex.h"
 #include "projection.h"
 #include "shared_vertices.h"
@@ -49,6 +50,8 @@ Overlap projected_no_shared(const std::array<Point3, 3>& t, const Point3& p, con
 template <class Sg>
 Overlap triangle_segment_3d_no_shared(const std::array<Point3, 3>& t, const Point3& p,
                                       const Point3& q) {
+  const std::array<Point3, 2> seg{p, q};
+  if (boxes_apart(t, seg)) return Overlap::disjoint;
   const int s4 = Sg::o3(t[0], t[1], t[2], p);
   const int s5 = Sg::o3(t[0], t[1], t[2], q);
   if (s4 != 0 && s4 == s5) return Overlap::disjoint;  // same open half-space
