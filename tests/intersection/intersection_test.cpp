@@ -19,6 +19,8 @@
 #include "certimesh/predicates/intersection/triangle_triangle_3d.h"
 #include "certimesh/predicates/orient2d.h"
 #include "cgal_oracle.h"
+#include "degenerate.h"
+#include "exact_fallback.h"
 
 namespace certimesh::testing {
 namespace {
@@ -52,6 +54,10 @@ std::string show(const E& e) {
 // One test's tally: exact mismatches and second-type errors must be zero.
 struct Tally {
   long cases = 0, truth_intersect = 0, mismatches = 0, second_type = 0, first_type = 0;
+  long degenerate = 0, fallback_mismatches = 0;
+  // Time in the library on generic input (random_unit pool): {exact ns, conservative ns, calls}.
+  double exact_ns = 0, conservative_ns = 0;
+  long timed = 0;
   std::string first_failure;
   // First-type errors per pool kind and per number of shared ids: {disjoint pairs, errors}.
   // Elements with a repeated id are degenerate by construction: counted apart.
@@ -90,6 +96,12 @@ struct Tally {
     const auto rate = [](const std::array<long, 2>& r) {
       return r[0] ? 100.0 * static_cast<double>(r[1]) / static_cast<double>(r[0]) : 0.0;
     };
+    std::printf("    degenerate pairs (exact mode used the fallback) %ld; fallback run on every pair: "
+                "%ld mismatches\n",
+                degenerate, fallback_mismatches);
+    if (timed)
+      std::printf("    generic input (random_unit): exact %.0f ns/call, conservative %.0f ns/call\n",
+                  exact_ns / static_cast<double>(timed), conservative_ns / static_cast<double>(timed));
     std::printf("    first-type %% by pool:");
     for (std::size_t k = 0; k + 1 < by_kind.size(); ++k)
       std::printf(" %s %.2f%%;", name(static_cast<PoolKind>(k)), rate(by_kind[k]));
@@ -100,6 +112,7 @@ struct Tally {
     std::printf("\n");
     EXPECT_EQ(mismatches, 0) << first_failure;
     EXPECT_EQ(second_type, 0) << first_failure;
+    EXPECT_EQ(fallback_mismatches, 0) << first_failure;
   }
 };
 
@@ -121,11 +134,36 @@ void campaign(const char* test, long cases, std::uint64_t salt, int na, int nb, 
   tally.report(test);
 }
 
+double nanoseconds_since(std::chrono::steady_clock::time_point t0) {
+  return std::chrono::duration<double, std::nano>(std::chrono::steady_clock::now() - t0).count();
+}
+
 template <class Test, class Oracle, class A, class B>
 void check_pair(const A& a, const B& b, Test test, Oracle oracle, Tally& tally,
                 const std::string& where) {
-  tally.add(oracle(a, b), test(a, b, IntersectionMode::exact),
-            test(a, b, IntersectionMode::conservative), where + " " + show(a) + " vs " + show(b));
+  namespace d = predicates::intersection_detail;
+  const bool truth = oracle(a, b);
+  // Untimed warm-up calls: the oracle has just evicted the library from the caches.
+  (void)test(a, b, IntersectionMode::exact);
+  (void)test(a, b, IntersectionMode::conservative);
+  const auto t0 = std::chrono::steady_clock::now();
+  const Overlap exact = test(a, b, IntersectionMode::exact);
+  const double t_exact = nanoseconds_since(t0);
+  const auto t1 = std::chrono::steady_clock::now();
+  const Overlap conservative = test(a, b, IntersectionMode::conservative);
+  const double t_conservative = nanoseconds_since(t1);
+  if (tally.kind == static_cast<int>(PoolKind::random_unit) && !tally.repeated) {
+    tally.exact_ns += t_exact;
+    tally.conservative_ns += t_conservative;
+    ++tally.timed;
+  }
+  tally.degenerate += d::degenerate(a) || d::degenerate(b);
+  const std::string what = where + " " + show(a) + " vs " + show(b);
+  if (d::exact_overlap(d::lift(a), d::lift(b)) != truth) {
+    ++tally.fallback_mismatches;
+    if (tally.first_failure.empty()) tally.first_failure = "fallback: " + what;
+  }
+  tally.add(truth, exact, conservative, what);
 }
 
 TEST(IntersectionRandom, SegmentSegment2d) {
@@ -334,6 +372,16 @@ TEST(IntersectionRegression, PrintedOneSharedVertexRuleHidesACrossing) {
 }
 
 // ---- Modes' contracts outside geometry.
+
+TEST(IntersectionContracts, SameIdDifferentCoordinatesIsNotShared) {
+  // #2 names (4,0) in s and (0,4) in t: a caller error, read as two unrelated vertices.
+  // The segments still touch at (0,0) through distinct ids 1 and 3: intersect.
+  const std::array<predicates::Vertex2, 2> s{{{{0, 0}, 1}, {{4, 0}, 2}}};
+  const std::array<predicates::Vertex2, 2> t{{{{0, 0}, 3}, {{0, 4}, 2}}};
+  for (IntersectionMode m : {IntersectionMode::exact, IntersectionMode::conservative})
+    EXPECT_EQ(predicates::segment_segment_2d(s, t, m), Overlap::intersect);
+  EXPECT_TRUE(oracle_segment_segment_2d(s, t));
+}
 
 TEST(IntersectionContracts, NonFiniteInput) {
   const std::array<predicates::Vertex2, 2> s{{{{0, 0}, 1}, {{NAN, 1}, 2}}};
