@@ -7,6 +7,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <functional>
 #include <sstream>
 #include <string>
@@ -30,7 +31,14 @@ using predicates::Overlap;
 using predicates::Point2;
 using predicates::Point3;
 
-constexpr std::uint64_t kSeed = 0xC3E7'1A2B'5EED'0001ULL;
+// Fixed seed and case counts; CERTIMESH_ISECT_SEED and CERTIMESH_ISECT_SCALE override them
+// for longer stress runs (the seed in use is printed with every result).
+std::uint64_t env_or(const char* name, std::uint64_t fallback) {
+  const char* v = std::getenv(name);
+  return v ? std::strtoull(v, nullptr, 0) : fallback;
+}
+const std::uint64_t kSeed = env_or("CERTIMESH_ISECT_SEED", 0xC3E7'1A2B'5EED'0001ULL);
+const long kScale = static_cast<long>(env_or("CERTIMESH_ISECT_SCALE", 1));
 
 std::string show(const Point2& p) {
   std::ostringstream o;
@@ -121,7 +129,7 @@ template <class One>
 void campaign(const char* test, long cases, std::uint64_t salt, int na, int nb, One one) {
   CaseGenerator gen(kSeed ^ salt);
   Tally tally;
-  for (long i = 0; i < cases; ++i) {
+  for (long i = 0; i < cases * kScale; ++i) {
     const PoolKind kind = gen.kind();
     const auto pool = gen.pool(kind);
     const int shared = gen.shared_count(std::min(na, nb));
