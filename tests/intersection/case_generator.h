@@ -30,9 +30,8 @@ enum class PoolKind : int {
 };
 
 inline const char* name(PoolKind k) {
-  static const char* names[] = {"random_unit", "small_integer", "derived",
-                                "nudged",      "planar",        "offset_random",
-                                "line",        "few_points",    "scaled"};
+  static const char* names[] = {"random_unit",   "small_integer", "derived",    "nudged", "planar",
+                                "offset_random", "line",          "few_points", "scaled"};
   return names[static_cast<int>(k)];
 }
 
@@ -64,7 +63,8 @@ class CaseGenerator {
         for (int i = 0; i < 3; ++i) p.push_back({small(), small(), small()});
         for (int i = 0; i < 5; ++i) p.push_back(p[index(3)]);
         return p;
-      default: break;
+      default:
+        break;
     }
     for (int i = 0; i < 4; ++i) p.push_back({small(), small(), small()});
     for (int i = 0; i < 5; ++i) p.push_back(derived_point(p));
@@ -108,7 +108,9 @@ class CaseGenerator {
  private:
   double unit() { return std::uniform_real_distribution<double>(-1.0, 1.0)(rng_); }
   double small() { return static_cast<double>(std::uniform_int_distribution<int>(-2, 2)(rng_)); }
-  std::size_t index(std::size_t n) { return std::uniform_int_distribution<std::size_t>(0, n - 1)(rng_); }
+  std::size_t index(std::size_t n) {
+    return std::uniform_int_distribution<std::size_t>(0, n - 1)(rng_);
+  }
 
   // Exact points on edges, faces and lines of earlier points, or a copy of one.
   predicates::Point3 derived_point(const std::vector<predicates::Point3>& p) {
@@ -119,11 +121,16 @@ class CaseGenerator {
       return wx * x + wy * y + wz * z;
     };
     switch (std::uniform_int_distribution<int>(0, 3)(rng_)) {
-      case 0: return {mix(a.x, b.x, 0, 0.5, 0.5, 0), mix(a.y, b.y, 0, 0.5, 0.5, 0), mix(a.z, b.z, 0, 0.5, 0.5, 0)};
-      case 1: return {mix(a.x, b.x, c.x, 0.5, 0.25, 0.25), mix(a.y, b.y, c.y, 0.5, 0.25, 0.25),
-                      mix(a.z, b.z, c.z, 0.5, 0.25, 0.25)};
-      case 2: return {2 * b.x - a.x, 2 * b.y - a.y, 2 * b.z - a.z};  // beyond b on line ab
-      default: return a;                                             // distinct id, same point
+      case 0:
+        return {mix(a.x, b.x, 0, 0.5, 0.5, 0), mix(a.y, b.y, 0, 0.5, 0.5, 0),
+                mix(a.z, b.z, 0, 0.5, 0.5, 0)};
+      case 1:
+        return {mix(a.x, b.x, c.x, 0.5, 0.25, 0.25), mix(a.y, b.y, c.y, 0.5, 0.25, 0.25),
+                mix(a.z, b.z, c.z, 0.5, 0.25, 0.25)};
+      case 2:
+        return {2 * b.x - a.x, 2 * b.y - a.y, 2 * b.z - a.z};  // beyond b on line ab
+      default:
+        return a;  // distinct id, same point
     }
   }
 

@@ -23,7 +23,7 @@ using Piece = std::variant<P3, Seg, Tri, Tet>;
 using Points = std::vector<P3>;
 
 struct Element {
-  Points points;                  // as given, repeats included
+  Points points;  // as given, repeats included
   std::vector<std::int64_t> ids;
 };
 
@@ -53,10 +53,14 @@ Points distinct(const Points& in) {
 
 bool independent(const Points& s) {
   switch (s.size()) {
-    case 1: return true;
-    case 2: return s[0] != s[1];
-    case 3: return !CGAL::collinear(s[0], s[1], s[2]);
-    default: return !CGAL::coplanar(s[0], s[1], s[2], s[3]);
+    case 1:
+      return true;
+    case 2:
+      return s[0] != s[1];
+    case 3:
+      return !CGAL::collinear(s[0], s[1], s[2]);
+    default:
+      return !CGAL::coplanar(s[0], s[1], s[2], s[3]);
   }
 }
 
@@ -77,10 +81,14 @@ int affine_dimension(const Points& d) {
 
 Piece make_piece(const Points& s) {
   switch (s.size()) {
-    case 1: return s[0];
-    case 2: return Seg(s[0], s[1]);
-    case 3: return Tri(s[0], s[1], s[2]);
-    default: return Tet(s[0], s[1], s[2], s[3]);
+    case 1:
+      return s[0];
+    case 2:
+      return Seg(s[0], s[1]);
+    case 3:
+      return Tri(s[0], s[1], s[2]);
+    default:
+      return Tet(s[0], s[1], s[2], s[3]);
   }
 }
 
@@ -123,9 +131,12 @@ bool point_in(const P3& p, const Piece& x) {
   return std::visit(
       [&](const auto& o) -> bool {
         using T = std::decay_t<decltype(o)>;
-        if constexpr (std::is_same_v<T, P3>) return o == p;
-        else if constexpr (std::is_same_v<T, Tet>) return !o.has_on_unbounded_side(p);
-        else return o.has_on(p);
+        if constexpr (std::is_same_v<T, P3>)
+          return o == p;
+        else if constexpr (std::is_same_v<T, Tet>)
+          return !o.has_on_unbounded_side(p);
+        else
+          return o.has_on(p);
       },
       x);
 }

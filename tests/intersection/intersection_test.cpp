@@ -96,27 +96,31 @@ struct Tally {
 
   void report(const char* test) const {
     const long disjoint = cases - truth_intersect;
-    std::printf("[%s] seed=%#llx cases=%ld (intersect %ld, disjoint %ld) exact mismatches=%ld "
-                "second-type=%ld first-type=%ld (%.3f%% of disjoint pairs)\n",
-                test, static_cast<unsigned long long>(kSeed), cases, truth_intersect, disjoint,
-                mismatches, second_type, first_type,
-                disjoint ? 100.0 * static_cast<double>(first_type) / static_cast<double>(disjoint) : 0.0);
+    std::printf(
+        "[%s] seed=%#llx cases=%ld (intersect %ld, disjoint %ld) exact mismatches=%ld "
+        "second-type=%ld first-type=%ld (%.3f%% of disjoint pairs)\n",
+        test, static_cast<unsigned long long>(kSeed), cases, truth_intersect, disjoint, mismatches,
+        second_type, first_type,
+        disjoint ? 100.0 * static_cast<double>(first_type) / static_cast<double>(disjoint) : 0.0);
     const auto rate = [](const std::array<long, 2>& r) {
       return r[0] ? 100.0 * static_cast<double>(r[1]) / static_cast<double>(r[0]) : 0.0;
     };
-    std::printf("    degenerate pairs (exact mode used the fallback) %ld; fallback run on every pair: "
-                "%ld mismatches\n",
-                degenerate, fallback_mismatches);
+    std::printf(
+        "    degenerate pairs (exact mode used the fallback) %ld; fallback run on every pair: "
+        "%ld mismatches\n",
+        degenerate, fallback_mismatches);
     if (timed)
-      std::printf("    generic input (random_unit): exact %.0f ns/call, conservative %.0f ns/call\n",
-                  exact_ns / static_cast<double>(timed), conservative_ns / static_cast<double>(timed));
+      std::printf(
+          "    generic input (random_unit): exact %.0f ns/call, conservative %.0f ns/call\n",
+          exact_ns / static_cast<double>(timed), conservative_ns / static_cast<double>(timed));
     std::printf("    first-type %% by pool:");
     for (std::size_t k = 0; k + 1 < by_kind.size(); ++k)
       std::printf(" %s %.2f%%;", name(static_cast<PoolKind>(k)), rate(by_kind[k]));
     std::printf(" repeated id %.2f%%;", rate(by_kind.back()));
     std::printf("\n    first-type %% by shared ids:");
     for (std::size_t k = 0; k < by_shared.size(); ++k)
-      if (by_shared[k][0]) std::printf(" %zu: %.2f%% of %ld;", k, rate(by_shared[k]), by_shared[k][0]);
+      if (by_shared[k][0])
+        std::printf(" %zu: %.2f%% of %ld;", k, rate(by_shared[k]), by_shared[k][0]);
     std::printf("\n");
     EXPECT_EQ(mismatches, 0) << first_failure;
     EXPECT_EQ(second_type, 0) << first_failure;
@@ -175,38 +179,43 @@ void check_pair(const A& a, const B& b, Test test, Oracle oracle, Tally& tally,
 }
 
 TEST(IntersectionRandom, SegmentSegment2d) {
-  campaign("segment_segment_2d", 60000, 1, 2, 2, [](const auto& pool, const auto& idx, Tally& t, const std::string& w) {
-    check_pair(element2<2>(pool, idx[0]), element2<2>(pool, idx[1]), predicates::segment_segment_2d,
-               oracle_segment_segment_2d, t, w);
-  });
+  campaign("segment_segment_2d", 60000, 1, 2, 2,
+           [](const auto& pool, const auto& idx, Tally& t, const std::string& w) {
+             check_pair(element2<2>(pool, idx[0]), element2<2>(pool, idx[1]),
+                        predicates::segment_segment_2d, oracle_segment_segment_2d, t, w);
+           });
 }
 
 TEST(IntersectionRandom, TriangleSegment2d) {
-  campaign("triangle_segment_2d", 60000, 2, 3, 2, [](const auto& pool, const auto& idx, Tally& t, const std::string& w) {
-    check_pair(element2<3>(pool, idx[0]), element2<2>(pool, idx[1]), predicates::triangle_segment_2d,
-               oracle_triangle_segment_2d, t, w);
-  });
+  campaign("triangle_segment_2d", 60000, 2, 3, 2,
+           [](const auto& pool, const auto& idx, Tally& t, const std::string& w) {
+             check_pair(element2<3>(pool, idx[0]), element2<2>(pool, idx[1]),
+                        predicates::triangle_segment_2d, oracle_triangle_segment_2d, t, w);
+           });
 }
 
 TEST(IntersectionRandom, TriangleSegment3d) {
-  campaign("triangle_segment_3d", 60000, 3, 3, 2, [](const auto& pool, const auto& idx, Tally& t, const std::string& w) {
-    check_pair(element3<3>(pool, idx[0]), element3<2>(pool, idx[1]), predicates::triangle_segment_3d,
-               oracle_triangle_segment_3d, t, w);
-  });
+  campaign("triangle_segment_3d", 60000, 3, 3, 2,
+           [](const auto& pool, const auto& idx, Tally& t, const std::string& w) {
+             check_pair(element3<3>(pool, idx[0]), element3<2>(pool, idx[1]),
+                        predicates::triangle_segment_3d, oracle_triangle_segment_3d, t, w);
+           });
 }
 
 TEST(IntersectionRandom, TriangleTriangle3d) {
-  campaign("triangle_triangle_3d", 30000, 4, 3, 3, [](const auto& pool, const auto& idx, Tally& t, const std::string& w) {
-    check_pair(element3<3>(pool, idx[0]), element3<3>(pool, idx[1]), predicates::triangle_triangle_3d,
-               oracle_triangle_triangle_3d, t, w);
-  });
+  campaign("triangle_triangle_3d", 30000, 4, 3, 3,
+           [](const auto& pool, const auto& idx, Tally& t, const std::string& w) {
+             check_pair(element3<3>(pool, idx[0]), element3<3>(pool, idx[1]),
+                        predicates::triangle_triangle_3d, oracle_triangle_triangle_3d, t, w);
+           });
 }
 
 TEST(IntersectionRandom, TetrahedronTriangle) {
-  campaign("tetrahedron_triangle", 20000, 5, 4, 3, [](const auto& pool, const auto& idx, Tally& t, const std::string& w) {
-    check_pair(element3<4>(pool, idx[0]), element3<3>(pool, idx[1]), predicates::tetrahedron_triangle,
-               oracle_tetrahedron_triangle, t, w);
-  });
+  campaign("tetrahedron_triangle", 20000, 5, 4, 3,
+           [](const auto& pool, const auto& idx, Tally& t, const std::string& w) {
+             check_pair(element3<4>(pool, idx[0]), element3<3>(pool, idx[1]),
+                        predicates::tetrahedron_triangle, oracle_tetrahedron_triangle, t, w);
+           });
 }
 
 // The same property through RapidCheck, seed fixed in the parameters (not RC_PARAMS).
@@ -225,12 +234,14 @@ TEST(IntersectionRapidCheck, TriangleSegment3dSmallIntegers) {
         std::array<predicates::Vertex3, 3> tri;
         std::array<predicates::Vertex3, 2> seg;
         for (std::size_t i = 0; i < 3; ++i)
-          tri[i] = {{double(c[3 * i]), double(c[3 * i + 1]), double(c[3 * i + 2])}, std::int64_t(i)};
+          tri[i] = {{double(c[3 * i]), double(c[3 * i + 1]), double(c[3 * i + 2])},
+                    std::int64_t(i)};
         for (std::size_t i = 0; i < 2; ++i)
-          seg[i] = i < std::size_t(shared) ? tri[i]
-                                           : predicates::Vertex3{{double(c[9 + 3 * i]), double(c[10 + 3 * i]),
-                                                                  double(c[11 + 3 * i])},
-                                                                 std::int64_t(10 + i)};
+          seg[i] = i < std::size_t(shared)
+                       ? tri[i]
+                       : predicates::Vertex3{
+                             {double(c[9 + 3 * i]), double(c[10 + 3 * i]), double(c[11 + 3 * i])},
+                             std::int64_t(10 + i)};
         const bool truth = oracle_triangle_segment_3d(tri, seg);
         RC_ASSERT((predicates::triangle_segment_3d(tri, seg, IntersectionMode::exact) ==
                    Overlap::intersect) == truth);
@@ -281,12 +292,14 @@ const HandCase kHandCases[] = {
 // The plane z = x + y: exact for these coordinates, and a tilted copy of the 2D case.
 std::array<predicates::Vertex3, 3> tilt(const std::array<predicates::Vertex2, 3>& t) {
   std::array<predicates::Vertex3, 3> o;
-  for (std::size_t i = 0; i < 3; ++i) o[i] = {{t[i].point.x, t[i].point.y, t[i].point.x + t[i].point.y}, t[i].id};
+  for (std::size_t i = 0; i < 3; ++i)
+    o[i] = {{t[i].point.x, t[i].point.y, t[i].point.x + t[i].point.y}, t[i].id};
   return o;
 }
 std::array<predicates::Vertex3, 2> tilt(const std::array<predicates::Vertex2, 2>& s) {
   std::array<predicates::Vertex3, 2> o;
-  for (std::size_t i = 0; i < 2; ++i) o[i] = {{s[i].point.x, s[i].point.y, s[i].point.x + s[i].point.y}, s[i].id};
+  for (std::size_t i = 0; i < 2; ++i)
+    o[i] = {{s[i].point.x, s[i].point.y, s[i].point.x + s[i].point.y}, s[i].id};
   return o;
 }
 
@@ -318,9 +331,12 @@ TEST(IntersectionHandCases, DegenerateElementsExact) {
   // Collinear triangle (0,0)-(2,0)-(4,0) sharing its middle vertex with a segment that
   // crosses the line there: the hulls meet only at the shared vertex.
   const std::array<V2, 3> flat{{{{0, 0}, 1}, {{2, 0}, 2}, {{4, 0}, 3}}};
-  EXPECT_EQ(predicates::triangle_segment_2d(flat, {{{{2, 0}, 2}, {{2, 3}, 5}}}, exact), Overlap::disjoint);
-  EXPECT_EQ(predicates::triangle_segment_2d(flat, {{{{2, 0}, 2}, {{3, 0}, 5}}}, exact), Overlap::intersect);
-  EXPECT_EQ(predicates::triangle_segment_2d(flat, {{{{2, 0}, 9}, {{2, 3}, 5}}}, exact), Overlap::intersect);
+  EXPECT_EQ(predicates::triangle_segment_2d(flat, {{{{2, 0}, 2}, {{2, 3}, 5}}}, exact),
+            Overlap::disjoint);
+  EXPECT_EQ(predicates::triangle_segment_2d(flat, {{{{2, 0}, 2}, {{3, 0}, 5}}}, exact),
+            Overlap::intersect);
+  EXPECT_EQ(predicates::triangle_segment_2d(flat, {{{{2, 0}, 9}, {{2, 3}, 5}}}, exact),
+            Overlap::intersect);
   // Two collinear triangles spanning the same shared segment: they meet only in it.
   const std::array<V3, 3> a{{{{0, 0, 0}, 1}, {{1, 0, 0}, 5}, {{4, 0, 0}, 2}}};
   const std::array<V3, 3> b{{{{0, 0, 0}, 1}, {{3, 0, 0}, 6}, {{4, 0, 0}, 2}}};
@@ -394,7 +410,8 @@ TEST(IntersectionContracts, SameIdDifferentCoordinatesIsNotShared) {
 TEST(IntersectionContracts, NonFiniteInput) {
   const std::array<predicates::Vertex2, 2> s{{{{0, 0}, 1}, {{NAN, 1}, 2}}};
   const std::array<predicates::Vertex2, 2> t{{{{5, 5}, 3}, {{6, 6}, 4}}};
-  EXPECT_EQ(predicates::segment_segment_2d(s, t, IntersectionMode::conservative), Overlap::intersect);
+  EXPECT_EQ(predicates::segment_segment_2d(s, t, IntersectionMode::conservative),
+            Overlap::intersect);
   EXPECT_THROW(predicates::segment_segment_2d(s, t, IntersectionMode::exact),
                predicates::NonFiniteInput);
 }

@@ -56,9 +56,8 @@ AffineSpan affine_span(std::span<const Point3> pts, const Frame& ambient) {
   if (ambient.dim == 1) return s;
   for (int i2 = 1; i2 < n; ++i2) {
     Frame plane = ambient;
-    const bool spans = ambient.dim == 2
-                           ? frame_orient2(ambient, pts[0], pts[i1], pts[i2]) != 0
-                           : plane_frame(pts[0], pts[i1], pts[i2], plane);
+    const bool spans = ambient.dim == 2 ? frame_orient2(ambient, pts[0], pts[i1], pts[i2]) != 0
+                                        : plane_frame(pts[0], pts[i1], pts[i2], plane);
     if (!spans) continue;
     s = {2, plane, {0, i1, i2, 0}};
     if (ambient.dim == 2) return s;

@@ -20,9 +20,7 @@ struct Frame {
 
 inline constexpr Frame space_frame{3, {0, 1}};
 
-inline double coord(const Point3& p, int axis) {
-  return axis == 0 ? p.x : (axis == 1 ? p.y : p.z);
-}
+inline double coord(const Point3& p, int axis) { return axis == 0 ? p.x : (axis == 1 ? p.y : p.z); }
 
 inline Point2 in_plane(const Point3& p, const Frame& f) {
   return {coord(p, f.axis[0]), coord(p, f.axis[1])};

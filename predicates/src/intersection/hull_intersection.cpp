@@ -46,9 +46,12 @@ bool weakly_separates(const Frame& f, const std::array<Point3, 3>& h, std::span<
   const auto scan = [&](std::span<const Point3> s, int& s_side, std::vector<Point3>& on) {
     for (const Point3& x : s) {
       const int v = side(f, h, x);
-      if (v == 0) on.push_back(x);
-      else if (s_side == 0) s_side = v;
-      else if (s_side != v) return false;
+      if (v == 0)
+        on.push_back(x);
+      else if (s_side == 0)
+        s_side = v;
+      else if (s_side != v)
+        return false;
     }
     return true;
   };

@@ -9,9 +9,12 @@ namespace certimesh::predicates::intersection_detail {
 
 inline Point2 project(const Point3& p, int dropped_axis) {
   switch (dropped_axis) {
-    case 0: return {p.y, p.z};
-    case 1: return {p.z, p.x};
-    default: return {p.x, p.y};
+    case 0:
+      return {p.y, p.z};
+    case 1:
+      return {p.z, p.x};
+    default:
+      return {p.x, p.y};
   }
 }
 

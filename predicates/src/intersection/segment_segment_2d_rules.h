@@ -30,7 +30,7 @@ inline bool opposite_about(const Point2& v, const Point2& p, const Point2& q) {
 /// pointing the same way.
 template <class Sg>
 Overlap one_shared_segments(const Point2& v, const Point2& a, const Point2& b) {
-  if (a == v || b == v) return Overlap::disjoint;  // one segment is the shared point itself
+  if (a == v || b == v) return Overlap::disjoint;      // one segment is the shared point itself
   if (Sg::o2(v, a, b) != 0) return Overlap::disjoint;  // not collinear: lines cross at v only
   return opposite_about(v, a, b) ? Overlap::disjoint : Overlap::intersect;
 }

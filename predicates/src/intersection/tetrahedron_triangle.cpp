@@ -15,7 +15,8 @@ using intersection_detail::triangle_segment_3d_rules;
 template <class Sg>
 bool boundaries_meet(const std::array<Vertex3, 4>& tet, const std::array<Vertex3, 3>& tri) {
   for (int skip = 0; skip < 4; ++skip) {
-    const std::array<Vertex3, 3> face{tet[(skip + 1) % 4], tet[(skip + 2) % 4], tet[(skip + 3) % 4]};
+    const std::array<Vertex3, 3> face{tet[(skip + 1) % 4], tet[(skip + 2) % 4],
+                                      tet[(skip + 3) % 4]};
     for (int i = 0; i < 3; ++i)
       if (triangle_segment_3d_rules<Sg>(face, {tri[i], tri[(i + 1) % 3]}) == Overlap::intersect)
         return true;

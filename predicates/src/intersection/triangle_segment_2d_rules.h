@@ -9,8 +9,8 @@
 
 #include <array>
 
-#include "certimesh/predicates/intersection/mode.h"
 #include "bounding_box.h"
+#include "certimesh/predicates/intersection/mode.h"
 #include "certimesh/predicates/intersection/vertex.h"
 #include "shared_vertices.h"
 #include "sign_source.h"
@@ -72,8 +72,8 @@ Overlap triangle_segment_2d_rules(const std::array<Vertex2, 3>& tri,
       return triangle_segment_one_shared<Sg>(tri[j].point, tri[(j + 1) % 3].point,
                                              tri[(j + 2) % 3].point, seg[1 - i].point);
   }
-  return triangle_segment_no_shared<Sg>({tri[0].point, tri[1].point, tri[2].point},
-                                        seg[0].point, seg[1].point);
+  return triangle_segment_no_shared<Sg>({tri[0].point, tri[1].point, tri[2].point}, seg[0].point,
+                                        seg[1].point);
 }
 
 }  // namespace certimesh::predicates::intersection_detail
