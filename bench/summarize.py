@@ -3,7 +3,8 @@
 
     bench_predicates --benchmark_repetitions=5 --benchmark_report_aggregates_only=true \
         --benchmark_out=out.json --benchmark_out_format=json
-    python3 bench/summarize.py out.json
+    python3 bench/summarize.py out.json            # the two tables
+    python3 bench/summarize.py out.json --targets  # the target verdicts
 
 Uses the median of the repetitions of the `time_per_call` counter (CPU time per predicate
 call). Ratios are of medians.
@@ -49,8 +50,32 @@ def r(v, limit=None):
     return s
 
 
+def targets(med):
+    g = lambda p, i, suffix="": med.get(f"BM_{p}_{i}{suffix}")
+    ok = lambda b: "**met**" if b else "**not met**"
+    for p in PREDICATES:
+        n, f, c, pr = g(p, "naive"), g(p, "filtered"), g(p, "cgal"), g(p, "prototype")
+        if None in (n, f, c):
+            continue
+        line = (f"- {p} filtered ≤ {TARGET[p]}× naive: {ok(f / n <= TARGET[p])} "
+                f"({f / n:.2f}×); ≤ CGAL Epick: {ok(f <= c)} ({f / c:.2f}×).")
+        if pr is not None:
+            line += (f" Branch-free prototype: {pr / n:.2f}× naive, {pr / c:.2f}× CGAL.")
+        oz = g(p, "prototype_ozaki")
+        if oz is not None:
+            line += f" Ozaki prototype: {oz / n:.2f}× naive, {oz / c:.2f}× CGAL."
+        print(line)
+    e, f, c = (g("orient3d", i, "_neardegenerate") for i in ["exact", "filtered", "cgal"])
+    if None not in (e, f, c):
+        print(f"- near-degenerate orient3d exact ≤ CGAL Epick: {ok(e <= c)} ({e:.0f} ns vs "
+              f"{c:.0f} ns, {e / c:.2f}×; filtered {f / c:.2f}×).")
+
+
 def main():
     ctx, med, cnt = load(sys.argv[1])
+    if "--targets" in sys.argv[2:]:
+        targets(med)
+        return
     g = lambda p, i, suffix="": med.get(f"BM_{p}_{i}{suffix}")
     print(f"Context: {ctx.get('date', '?')}, {ctx.get('num_cpus', '?')} CPUs @ "
           f"{ctx.get('mhz_per_cpu', '?')} MHz, bench_tuples={ctx.get('bench_tuples', '?')}\n")
