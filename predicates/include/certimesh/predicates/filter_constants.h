@@ -6,33 +6,46 @@
 //   3. per axis, the largest rounded |difference| is taken (orient2d, orient3d), or one
 //      largest over all axes (incircle, insphere, whose lifted column mixes the axes);
 //   4. if those maxima lie inside [lower_guard, upper_guard] the computed determinant has
-//      the exact sign whenever |det| > error_bound * (product of maxima, one per degree).
-// The guards keep the scaling argument valid: below lower_guard an underflow could add an
-// error the bound does not cover, above upper_guard a product could overflow.
+//      the exact sign whenever |det| > error_bound * (product of maxima, one per degree),
+//      that product and the multiplication by error_bound being evaluated in double as
+//      filters.h writes them.
+// The proof divides every quantity by the product of the maxima of its degree: then each
+// rounding is a relative error of at most 2^-53 and the error bound E does not depend on
+// the scale. The guards keep that argument valid: below lower_guard an underflowing
+// product could add an absolute error that does not scale (the proofs charge it at
+// 2^-1074 / lower_guard^degree), above upper_guard an intermediate could overflow.
+// error_bound is E / (1 - 2^-53)^r rounded up to a double, r being the number of roundings
+// in the computation of the bound itself.
 //
-// Values are hex-float literals rounded up. tests/proofs/constants_match_proofs checks
-// that each one is the value its proof establishes; do not edit by hand.
+// Values are hex-float literals. The CTest test proofs.constants_match
+// (proofs/check_constants.py) checks that each one is the value its proof establishes;
+// do not edit by hand: change the proof (proofs/gappa/generate.py), then copy its values.
 #pragma once
 
 namespace certimesh::predicates::filter_constants {
 
 // orient2d: |det| > bound * maxx * maxy, maxx, maxy in [lower, upper].
-inline constexpr double orient2d_error_bound = 0x1.0000000000001p-49;
+// proofs/gappa/orient2d.g: E = 0x1.0000000000002p-50 (about 8.0 * 2^-53).
+inline constexpr double orient2d_error_bound = 0x1.0000000000004p-50;  // 8.8817841970012602e-16
 inline constexpr double orient2d_lower_guard = 0x1p-480;
 inline constexpr double orient2d_upper_guard = 0x1p+500;
 
 // orient3d: |det| > bound * maxx * maxy * maxz.
-inline constexpr double orient3d_error_bound = 0x1.0000000000001p-46;
+// proofs/gappa/orient3d.g: E = 0x1.7000000000005p-48 (about 46.0 * 2^-53).
+inline constexpr double orient3d_error_bound = 0x1.7000000000008p-48;  // 5.1070259132757264e-15
 inline constexpr double orient3d_lower_guard = 0x1p-320;
 inline constexpr double orient3d_upper_guard = 0x1p+330;
 
 // incircle: |det| > bound * m^4, m the largest |difference| over both axes.
-inline constexpr double incircle_error_bound = 0x1.0000000000001p-43;
+// proofs/gappa/incircle.g: E = 0x1.0000000000005p-46 (about 128.0 * 2^-53).
+inline constexpr double incircle_error_bound = 0x1.0000000000008p-46;  // 1.4210854715202029e-14
 inline constexpr double incircle_lower_guard = 0x1p-240;
 inline constexpr double incircle_upper_guard = 0x1p+250;
 
 // insphere: |det| > bound * m^5, m the largest |difference| over all three axes.
-inline constexpr double insphere_error_bound = 0x1.0000000000001p-40;
+// proofs/gappa/insphere.g (with insphere_minors.g, insphere_lifts.g):
+// E = 0x1.1400000000008p-43 (about 1104.0 * 2^-53).
+inline constexpr double insphere_error_bound = 0x1.140000000000bp-43;  // 1.2256862191861756e-13
 inline constexpr double insphere_lower_guard = 0x1p-190;
 inline constexpr double insphere_upper_guard = 0x1p+200;
 

@@ -1,0 +1,193 @@
+#!/usr/bin/env python3
+"""proofs.constants_match: fail unless every constant in filter_constants.h is the value
+its Gappa proof establishes, and unless each proof's model parameters match its guards.
+
+For each predicate P (proofs/gappa/P.g, plus the lemma files it imports):
+  * P_error_bound  == the binary64 number just above E / (1 - 2^-53)^r, i.e. rounded up,
+    where E is the bound of the goal tagged @E and r is @bound_roundings (the roundings
+    of the bound's own computation in filters.h, each of which can lose a factor 1 - 2^-53);
+  * P_lower_guard == @lower_guard, P_upper_guard == @upper_guard;
+  * every @delta hypothesis is |d| <= 2^-53 (unit roundoff of binary64 round-to-nearest);
+  * every @diff hypothesis is |T| <= 1 + 2^-53 (an exact difference over the maximum of the
+    rounded ones);
+  * every @eta hypothesis of degree k is at least 2^-1074 / lower_guard^k (underflow);
+  * every computed quantity has a @range goal of its degree k, and range * upper_guard^k
+    <= 2^1023 (no overflow);
+  * the bound's own computation neither underflows nor overflows:
+    bound * lower_guard^j >= 2^-1022 and bound * upper_guard^j <= 2^1023 for j <= degree,
+    and lower_guard^2 >= 2^-1022 (the m*m of incircle/insphere);
+  * every @import hypothesis is implied by the @export goal with the same key.
+Exact rational arithmetic throughout.  Usage: check_constants.py <filter_constants.h> <gappa dir>
+"""
+import os
+import re
+import sys
+from fractions import Fraction
+
+PREDICATES = ["orient2d", "orient3d", "incircle", "insphere"]
+U = Fraction(1, 2 ** 53)
+TWO = Fraction(2)
+errors = []
+
+
+def fail(msg):
+    errors.append(msg)
+
+
+def parse_num(tok):
+    """Exact value of a C/Gappa numeric literal: hex float, decimal, or Gappa's NbE."""
+    tok = tok.strip()
+    neg = tok.startswith("-")
+    if neg or tok.startswith("+"):
+        tok = tok[1:]
+    m = re.fullmatch(r"0[xX]([0-9a-fA-F]*)(?:\.([0-9a-fA-F]*))?[pP]([+-]?\d+)", tok)
+    if m:
+        ip, fp, e = m.group(1) or "0", m.group(2) or "", int(m.group(3))
+        v = Fraction(int(ip + fp, 16), 16 ** len(fp)) * TWO ** e
+    elif re.fullmatch(r"\d+b[+-]?\d+", tok):
+        a, b = tok.split("b")
+        v = Fraction(int(a)) * TWO ** int(b)
+    else:
+        v = Fraction(tok)
+    return -v if neg else v
+
+
+def round_up_double(q):
+    e = 0
+    while q >= TWO ** (e + 1):
+        e += 1
+    while q < TWO ** e:
+        e -= 1
+    ulp = TWO ** (e - 52)
+    return -(-q // ulp) * ulp
+
+
+def is_double(q):
+    return q > 0 and round_up_double(q) == q
+
+
+def read_header(path):
+    consts = {}
+    for m in re.finditer(r"inline\s+constexpr\s+double\s+(\w+)\s*=\s*([^;]+);", open(path).read()):
+        consts[m.group(1)] = (m.group(2).strip(), parse_num(m.group(2)))
+    return consts
+
+
+class GFile:
+    def __init__(self, path):
+        self.path = path
+        self.name = os.path.basename(path)[:-2]
+        text = open(path).read()
+        self.meta = dict(re.findall(r"^#\s*@(\w+)\s+(\S+)\s*$", text, re.M))
+        self.hyps, self.goals = [], []
+        body = text[text.index("{") + 1:text.index("}")]
+        hyp_part, goal_part = body.split("->", 1)
+        for part, dest in ((hyp_part, self.hyps), (goal_part, self.goals)):
+            for line in part.splitlines():
+                m = re.match(r"\s*(?:/\\)?\s*\|(.+)\|\s*<=\s*(\S+)\s*#\s*@(.*)$", line)
+                if m:
+                    dest.append((m.group(1).strip(), parse_num(m.group(2)), m.group(3).strip()))
+                elif line.strip() and not line.strip().startswith("#"):
+                    fail(f"{self.name}.g: unrecognized proposition line: {line.strip()}")
+        # quantities computed in floating point: lowercase definitions
+        self.computed = re.findall(r"^([a-z]\w*)\s*=", text, re.M)
+        self.lower = parse_num(self.meta["lower_guard"]) if "lower_guard" in self.meta else None
+        self.upper = parse_num(self.meta["upper_guard"]) if "upper_guard" in self.meta else None
+
+    def tagged(self, lst, prefix):
+        return [(e, v, t) for e, v, t in lst if t.split()[0] == prefix]
+
+
+def check_model(g, lower, upper):
+    for e, v, t in g.tagged(g.hyps, "delta"):
+        if v != U:
+            fail(f"{g.name}.g: |{e}| <= {v}: a rounding's relative error must be 2^-53")
+    for e, v, t in g.tagged(g.hyps, "diff"):
+        if v != 1 + U:
+            fail(f"{g.name}.g: |{e}| <= {v}: a normalized difference is bounded by 1 + 2^-53")
+    for e, v, t in g.tagged(g.hyps, "eta"):
+        k = int(re.search(r"degree=(\d+)", t).group(1))
+        need = TWO ** -1074 / lower ** k
+        if v < need:
+            fail(f"{g.name}.g: |{e}| <= {v}: an underflow of degree {k} can reach 2^-1074/lower^{k} = {need}")
+    ranged = {}
+    for e, v, t in g.tagged(g.goals, "range"):
+        k = int(re.search(r"degree=(\d+)", t).group(1))
+        ranged[e] = k
+        if upper is not None and v * upper ** k > TWO ** 1023:
+            fail(f"{g.name}.g: |{e}| <= {v} (degree {k}) may overflow below upper_guard {upper}")
+    for c in g.computed:
+        if c not in ranged:
+            fail(f"{g.name}.g: computed quantity {c} has no @range goal (overflow unchecked)")
+
+
+def main():
+    header, gdir = sys.argv[1], sys.argv[2]
+    consts = read_header(header)
+    files = {}
+    for fn in sorted(os.listdir(gdir)):
+        if fn.endswith(".g"):
+            files[fn[:-2]] = GFile(os.path.join(gdir, fn))
+    exports = {}
+    for g in files.values():
+        for e, v, t in g.tagged(g.goals, "export"):
+            exports[t.split()[1]] = (e, v)
+    for p in PREDICATES:
+        if p not in files:
+            fail(f"missing proof proofs/gappa/{p}.g")
+            continue
+        g = files[p]
+        if g.meta.get("predicate") != p:
+            fail(f"{p}.g: @predicate is {g.meta.get('predicate')}")
+        lemmas = [f for f in files.values() if f.meta.get("lemma_of") == p]
+        E = [v for e, v, t in g.tagged(g.goals, "E")]
+        if len(E) != 1:
+            fail(f"{p}.g: needs exactly one @E goal")
+            continue
+        E = E[0]
+        r = int(g.meta["bound_roundings"])
+        deg = int(g.meta["degree"])
+        L, Up = g.lower, g.upper
+        code = round_up_double(E / (1 - U) ** r)
+        for what, want in (("error_bound", code), ("lower_guard", L), ("upper_guard", Up)):
+            key = f"{p}_{what}"
+            if key not in consts:
+                fail(f"filter_constants.h: {key} missing")
+            elif consts[key][1] != want:
+                fail(f"filter_constants.h: {key} = {consts[key][0]} but its proof gives "
+                     f"{float(want).hex()} ({float(want)!r})")
+        if not (is_double(L) and is_double(Up)):
+            fail(f"{p}.g: guards must be binary64 numbers")
+        for j in range(1, deg + 1):
+            if code * L ** j < TWO ** -1022:
+                fail(f"{p}: bound * lower_guard^{j} underflows")
+            if code * Up ** j > TWO ** 1023:
+                fail(f"{p}: bound * upper_guard^{j} may overflow")
+        if L * L < TWO ** -1022 or Up * Up > TWO ** 1023:
+            fail(f"{p}: the squared guards leave the normal range")
+        for f in [g] + lemmas:
+            if f.lower != L:
+                fail(f"{f.name}.g: @lower_guard {f.lower} differs from {p}.g's {L}")
+            check_model(f, L, Up)
+            for e, v, t in f.tagged(f.hyps, "import"):
+                key = t.split()[1]
+                if key not in exports:
+                    fail(f"{f.name}.g: @import {key} has no matching @export")
+                    continue
+                ee, ev = exports[key]
+                src = key.split(":")[0]
+                if files.get(src) is None or files[src].meta.get("lemma_of") != p:
+                    fail(f"{f.name}.g: @import {key} comes from a file that is not a lemma of {p}")
+                if ee != e or ev > v:
+                    fail(f"{f.name}.g: @import |{e}| <= {v} is not implied by {key}: |{ee}| <= {ev}")
+        print(f"{p}: E = {float(E)!r} ({float(E).hex()}), code bound = {float(code).hex()} "
+              f"= {float(code)!r}, guards [{float(L).hex()}, {float(Up).hex()}], "
+              f"{len(lemmas)} lemma file(s)")
+    if errors:
+        print("\n".join("FAIL: " + e for e in errors))
+        sys.exit(1)
+    print("all filter constants match their proofs")
+
+
+if __name__ == "__main__":
+    main()

@@ -1,0 +1,378 @@
+#!/usr/bin/env python3
+"""Regenerate the Gappa scripts proofs/gappa/*.g from the evaluation order of
+predicates/include/certimesh/predicates/detail/filters.h.
+
+Maintenance tool, not part of the test suite: the tests read the .g files only.
+Each script is emitted twice: first with `in ?` goals, so that Gappa reports the tightest
+enclosures it can prove; then with those enclosures rounded up to binary64 (the error
+bound) or to a power of two (the ranges) as the goals that `gappa` must prove.
+
+Model (proofs/README.md, section 2): every quantity is divided by the product of the
+maxima of its degree, so a rounded difference is T*(1+d) with |T| <= 1+2^-53, an
+addition is (a+b)*(1+d), a product is a*b*(1+d) + eta, |d| <= 2^-53 and
+|eta| <= 2^-1074 / lower_guard^degree (underflow of a product; additions and
+differences of binary64 numbers are exact when they underflow).
+
+Usage: python3 generate.py [--dry-run] [name ...]     (run from any directory)
+"""
+import os
+import re
+import subprocess
+import sys
+from fractions import Fraction
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+U = "0x1p-53"
+T_MAX = "0x1.00000000000008p0"  # 1 + 2^-53
+
+
+def hexf(q):
+    """Exact hex literal of a dyadic rational (as Python's float.hex when it fits)."""
+    q = Fraction(q)
+    assert q > 0
+    m, e = q.numerator, 0
+    d = q.denominator
+    while d > 1:
+        assert d % 2 == 0
+        d //= 2
+        e -= 1
+    while m % 2 == 0:
+        m //= 2
+        e += 1
+    nb = m.bit_length()
+    frac = m - (1 << (nb - 1))
+    fb = nb - 1
+    digits = (fb + 3) // 4
+    frac <<= digits * 4 - fb
+    exp = e + nb - 1
+    s = f"0x1.{frac:0{digits}x}p{exp:+d}" if digits else f"0x1p{exp:+d}"
+    return s
+
+
+def round_up_double(q):
+    q = Fraction(q)
+    e = 0
+    while q >= 2 ** (e + 1):
+        e += 1
+    while q < 2 ** e:
+        e -= 1
+    ulp = Fraction(2) ** (e - 52)
+    n = -(-q // ulp)
+    return n * ulp
+
+
+def pow2_above(q):
+    e = 0
+    while Fraction(2) ** e < q:
+        e += 1
+    while e > 0 and Fraction(2) ** (e - 1) >= q:
+        e -= 1
+    return Fraction(2) ** e
+
+
+class Script:
+    """One Gappa script in the relative (normalized) model."""
+
+    def __init__(self, name, lower_exp, header):
+        self.name = name
+        self.l = -lower_exp  # lower guard = 2^-l
+        self.header = header
+        self.defs = []
+        self.hyps = []
+        self.hints = []
+        self.deg = {}
+        self.order = []
+        self.goals = []  # (expr, kind, tag) kind in E, range, export
+        self.ops = 0
+
+    @staticmethod
+    def cap(n):
+        return n[0].upper() + n[1:]
+
+    def comment(self, text):
+        self.defs.append("")
+        self.defs.append("# " + text)
+
+    def diff(self, n, axis_max):
+        N = self.cap(n)
+        self.defs.append(f"{n} = {N} * (1 + d_{n});   # fl(difference) / {axis_max}")
+        self.hyps.append((f"|{N}| <= {T_MAX}", "@diff"))
+        self.hyps.append((f"|d_{n}| <= {U}", "@delta"))
+        self.hints.append(f"{n} - {N} -> {N} * d_{n};")
+        self.deg[n] = 1
+        self.order.append(n)
+
+    def imported(self, n, deg, err, rng, exact_rng, src):
+        N = self.cap(n)
+        self.hyps.append((f"|{n} - {N}| <= {err}", f"@import {src}:{n}.err"))
+        self.hyps.append((f"|{n}| <= {rng}", f"@import {src}:{n}.range"))
+        self.hyps.append((f"|{N}| <= {exact_rng}", f"@import {src}:{N}.range"))
+        self.deg[n] = deg
+
+    def mul(self, n, a, b):
+        N, A, B = self.cap(n), self.cap(a), self.cap(b)
+        k = self.deg[a] + self.deg[b]
+        self.defs.append(f"{n} = {a} * {b} * (1 + d_{n}) + eta_{n};  {N} = {A} * {B};")
+        self.hyps.append((f"|d_{n}| <= {U}", "@delta"))
+        self.hyps.append((f"|eta_{n}| <= 0x1p{-1074 + k * self.l}", f"@eta degree={k}"))
+        self.hints.append(f"{n} - {N} -> (({a} - {A}) * {b} + {A} * ({b} - {B})) + {a} * {b} * d_{n} + eta_{n};")
+        self.deg[n] = k
+        self.order.append(n)
+
+    def add(self, n, a, b, op="+"):
+        N, A, B = self.cap(n), self.cap(a), self.cap(b)
+        assert self.deg[a] == self.deg[b], (a, b)
+        self.defs.append(f"{n} = ({a} {op} {b}) * (1 + d_{n});  {N} = {A} {op} {B};")
+        self.hyps.append((f"|d_{n}| <= {U}", "@delta"))
+        self.hints.append(f"{n} - {N} -> (({a} - {A}) {op} ({b} - {B})) + ({a} {op} {b}) * d_{n};")
+        self.deg[n] = self.deg[a]
+        self.order.append(n)
+
+    def text(self, goals):
+        out = list(self.header)
+        out.append("")
+        out.append("# ---- the computation, every quantity divided by the maxima of its degree ----")
+        out += self.defs
+        out.append("")
+        out.append("{")
+        hyp_lines = [f"{h}   # {t}" for h, t in self.hyps]
+        out.append("     " + "\n  /\\ ".join(hyp_lines))
+        goal_lines = [f"{g}   # {t}" for g, t in goals]
+        out.append("  -> " + "\n  /\\ ".join(goal_lines))
+        out.append("}")
+        out.append("")
+        out.append("# ---- hints: the error of each operation, split into the errors of its operands")
+        out.append("# ---- and its own rounding (Gappa then bounds each term by interval arithmetic)")
+        out += self.hints
+        return "\n".join(out) + "\n"
+
+
+def run_query(script, wanted):
+    """wanted: list of expressions; returns dict expr -> max |bound| (Fraction)."""
+    goals = [(f"{w} in ?", "query") for w in wanted]
+    src = script.text(goals)
+    src = re.sub(r"   # query", "", src)
+    r = subprocess.run(["gappa"], input=src, capture_output=True, text=True)
+    res = {}
+    for line in (r.stdout + r.stderr).splitlines():
+        m = re.match(r"\s*(.*) in \[(-?\d+)(?:b(-?\d+))?(?:\s*\{[^}]*\})?,\s*(-?\d+)(?:b(-?\d+))?", line)
+        if m:
+            lo = Fraction(int(m.group(2))) * Fraction(2) ** int(m.group(3) or 0)
+            hi = Fraction(int(m.group(4))) * Fraction(2) ** int(m.group(5) or 0)
+            res[m.group(1).strip()] = max(abs(lo), abs(hi))
+    missing = [w for w in wanted if w not in res]
+    if missing:
+        sys.exit(f"{script.name}: gappa gave no enclosure for {missing}\n{r.stdout}\n{r.stderr}")
+    return res
+
+
+def finish(script, final, exports=()):
+    """Query, then return the final text with proven goals."""
+    wanted = ([f"{final} - {script.cap(final)}"] if final else []) + list(script.order)
+    for e in exports:
+        wanted += [f"{e} - {script.cap(e)}", script.cap(e)]
+    wanted = list(dict.fromkeys(wanted))
+    res = run_query(script, wanted)
+    goals = []
+    if final:
+        E = round_up_double(res[f"{final} - {script.cap(final)}"])
+        goals.append((f"|{final} - {script.cap(final)}| <= {hexf(E)}", "@E"))
+    bydeg = {}
+    for n in script.order:
+        bydeg.setdefault(script.deg[n], Fraction(0))
+        bydeg[script.deg[n]] = max(bydeg[script.deg[n]], res[n])
+    exp = {}
+    for e in exports:
+        err = round_up_double(res[f"{e} - {script.cap(e)}"])
+        rng = round_up_double(res[e])
+        xr = round_up_double(res[script.cap(e)])
+        exp[e] = (hexf(err), hexf(rng), hexf(xr))
+        goals.append((f"|{e} - {script.cap(e)}| <= {hexf(err)}", f"@export {script.name}:{e}.err"))
+        goals.append((f"|{e}| <= {hexf(rng)}", f"@export {script.name}:{e}.range"))
+        goals.append((f"|{script.cap(e)}| <= {hexf(xr)}", f"@export {script.name}:{script.cap(e)}.range"))
+    for n in script.order:
+        k = script.deg[n]
+        goals.append((f"|{n}| <= {hexf(pow2_above(bydeg[k]))}", f"@range degree={k}"))
+    return script.text(goals), exp
+
+
+# ----------------------------------------------------------------------------------------
+def meta(pred, lower, upper, roundings, degree, extra):
+    return [
+        f"# Gappa proof of the {pred} filter bound of certimesh.",
+        "# Models predicates/include/certimesh/predicates/detail/filters.h ("
+        + pred + "_filter) operation by operation:",
+        "# same operands, same order, binary64 round-to-nearest, no FMA. Derivation: proofs/README.md.",
+        "# Generated by proofs/gappa/generate.py; checked by the CTest tests proofs.gappa."
+        + pred + " and proofs.constants_match.",
+        "#",
+    ] + ["# " + x for x in extra] + [
+        "#",
+        f"# @predicate {pred}",
+        f"# @lower_guard {lower}",
+        f"# @upper_guard {upper}",
+        f"# @bound_roundings {roundings}",
+        f"# @degree {degree}",
+    ]
+
+
+def orient2d():
+    lower, upper = -480, 500
+    s = Script("orient2d", lower, meta("orient2d", f"0x1p{lower}", f"0x1p+{upper}", 2, 2, [
+        "Normalization: x differences divided by maxx, y differences by maxy, every product by",
+        "maxx*maxy. Theorem: |fl(det) - det| <= E * maxx * maxy, E the bound of the @E goal.",
+        "Code constant: the binary64 value above E / (1 - 2^-53)^2 (two roundings in",
+        "fl(fl(bound * maxx) * maxy)).",
+    ]))
+    s.diff("acx", "maxx"); s.diff("bcx", "maxx"); s.diff("acy", "maxy"); s.diff("bcy", "maxy")
+    s.comment("det = acx * bcy - acy * bcx")
+    s.mul("p1", "acx", "bcy"); s.mul("p2", "acy", "bcx"); s.add("det", "p1", "p2", "-")
+    return [("orient2d", finish(s, "det")[0])]
+
+
+def orient3d():
+    lower, upper = -320, 330
+    s = Script("orient3d", lower, meta("orient3d", f"0x1p{lower}", f"0x1p+{upper}", 3, 3, [
+        "Normalization: differences divided by the maximum of their axis, each product by the",
+        "product of its axes' maxima. Theorem: |fl(det) - det| <= E * maxx * maxy * maxz.",
+        "Code constant: the binary64 value above E / (1 - 2^-53)^3.",
+    ]))
+    for a in "xyz":
+        for p in "abc":
+            s.diff(p + "d" + a, "max" + a)
+    s.comment("det = adx * (bdy * cdz - bdz * cdy) + bdx * (cdy * adz - cdz * ady)")
+    s.comment("      + cdx * (ady * bdz - adz * bdy), summed left to right")
+    s.mul("s1", "bdy", "cdz"); s.mul("s2", "bdz", "cdy"); s.add("m1", "s1", "s2", "-")
+    s.mul("s3", "cdy", "adz"); s.mul("s4", "cdz", "ady"); s.add("m2", "s3", "s4", "-")
+    s.mul("s5", "ady", "bdz"); s.mul("s6", "adz", "bdy"); s.add("m3", "s5", "s6", "-")
+    s.mul("t1", "adx", "m1"); s.mul("t2", "bdx", "m2"); s.mul("t3", "cdx", "m3")
+    s.add("u1", "t1", "t2"); s.add("det", "u1", "t3")
+    return [("orient3d", finish(s, "det")[0])]
+
+
+def incircle():
+    lower, upper = -240, 250
+    s = Script("incircle", lower, meta("incircle", f"0x1p{lower}", f"0x1p+{upper}", 4, 4, [
+        "Normalization: every difference divided by m = max(maxx, maxy), a quantity of degree",
+        "k by m^k. Theorem: |fl(det) - det| <= E * m^4. Code constant: the binary64 value",
+        "above E / (1 - 2^-53)^4 (m2 = fl(m*m) enters twice, then fl(fl(bound*m2)*m2)).",
+    ]))
+    for a in "xy":
+        for p in "abc":
+            s.diff(p + "d" + a, "m")
+    s.comment("lifts: alift = adx * adx + ady * ady, ...")
+    for p in "abc":
+        s.mul(p + "xx", p + "dx", p + "dx"); s.mul(p + "yy", p + "dy", p + "dy")
+        s.add(p + "lift", p + "xx", p + "yy")
+    s.comment("det = alift * (bdx * cdy - cdx * bdy) + blift * (cdx * ady - adx * cdy)")
+    s.comment("      + clift * (adx * bdy - bdx * ady), summed left to right")
+    s.mul("s1", "bdx", "cdy"); s.mul("s2", "cdx", "bdy"); s.add("m1", "s1", "s2", "-")
+    s.mul("s3", "cdx", "ady"); s.mul("s4", "adx", "cdy"); s.add("m2", "s3", "s4", "-")
+    s.mul("s5", "adx", "bdy"); s.mul("s6", "bdx", "ady"); s.add("m3", "s5", "s6", "-")
+    s.mul("t1", "alift", "m1"); s.mul("t2", "blift", "m2"); s.mul("t3", "clift", "m3")
+    s.add("u1", "t1", "t2"); s.add("det", "u1", "t3")
+    return [("incircle", finish(s, "det")[0])]
+
+
+def insphere():
+    lower, upper = -190, 200
+    common = [
+        "Normalization: every difference divided by m = max(mx, my, mz), a quantity of degree",
+        "k by m^k.",
+    ]
+    # Lemma 1: the four 3x3 minors abc, bcd, cda, dab.
+    s1 = Script("insphere_minors", lower, [
+        "# Lemma 1 of the insphere filter proof (the others: insphere_lifts.g, insphere.g):",
+        "# the 3x3 minors abc, bcd, cda, dab of insphere_filter in",
+        "# predicates/include/certimesh/predicates/detail/filters.h, same order, binary64",
+        "# round-to-nearest, no FMA. Its @export goals are the @import hypotheses of insphere.g",
+        "# (proofs.constants_match checks that they agree). Generated by proofs/gappa/generate.py.",
+        "#"] + ["# " + x for x in common] + [
+        "#",
+        "# @lemma_of insphere",
+        f"# @lower_guard 0x1p{lower}",
+    ])
+    for a in "xyz":
+        for p in "abcd":
+            s1.diff(p + "e" + a, "m")
+
+    def minor(n, p, q):
+        s1.mul(n + "_1", p + "ex", q + "ey"); s1.mul(n + "_2", q + "ex", p + "ey")
+        s1.add(n, n + "_1", n + "_2", "-")
+
+    s1.comment("2x2 minors: ab = aex * bey - bex * aey, ...")
+    for n, p, q in [("ab", "a", "b"), ("bc", "b", "c"), ("cd", "c", "d"), ("da", "d", "a"),
+                    ("ac", "a", "c"), ("bd", "b", "d")]:
+        minor(n, p, q)
+
+    def tri(n, terms):
+        names = []
+        for i, (sg, z, mn) in enumerate(terms):
+            s1.mul(f"{n}_{i + 1}", z + "ez", mn)
+            names.append((sg, f"{n}_{i + 1}"))
+        s1.add(n + "_s", names[0][1], names[1][1], names[1][0])
+        s1.add(n, n + "_s", names[2][1], names[2][0])
+
+    s1.comment("abc = aez * bc - bez * ac + cez * ab, ... (summed left to right)")
+    tri("abc", [("+", "a", "bc"), ("-", "b", "ac"), ("+", "c", "ab")])
+    tri("bcd", [("+", "b", "cd"), ("-", "c", "bd"), ("+", "d", "bc")])
+    tri("cda", [("+", "c", "da"), ("+", "d", "ac"), ("+", "a", "cd")])
+    tri("dab", [("+", "d", "ab"), ("+", "a", "bd"), ("+", "b", "da")])
+    t1, e1 = finish(s1, None, exports=["abc", "bcd", "cda", "dab"])
+
+    # Lemma 2: the lifts.
+    s2 = Script("insphere_lifts", lower, [
+        "# Lemma 2 of the insphere filter proof: the lifts alift = aex*aex + aey*aey + aez*aez,",
+        "# ... of insphere_filter, same order, binary64 round-to-nearest, no FMA. Its @export",
+        "# goals are @import hypotheses of insphere.g. Generated by proofs/gappa/generate.py.",
+        "#"] + ["# " + x for x in common] + [
+        "#",
+        "# @lemma_of insphere",
+        f"# @lower_guard 0x1p{lower}",
+    ])
+    for a in "xyz":
+        for p in "abcd":
+            s2.diff(p + "e" + a, "m")
+    for p in "abcd":
+        s2.mul(p + "xx", p + "ex", p + "ex"); s2.mul(p + "yy", p + "ey", p + "ey")
+        s2.mul(p + "zz", p + "ez", p + "ez")
+        s2.add(p + "l2", p + "xx", p + "yy"); s2.add(p + "lift", p + "l2", p + "zz")
+    t2, e2 = finish(s2, None, exports=["alift", "blift", "clift", "dlift"])
+
+    # Main: det = (dlift * abc - clift * dab) + (blift * cda - alift * bcd)
+    s3 = Script("insphere", lower, meta("insphere", f"0x1p{lower}", f"0x1p+{upper}", 5, 5, common + [
+        "Theorem: |fl(det) - det| <= E * m^5, from the minors and lifts proven in",
+        "insphere_minors.g and insphere_lifts.g (imported as hypotheses). Code constant: the",
+        "binary64 value above E / (1 - 2^-53)^5 (m2 = fl(m*m) enters twice, then three more",
+        "roundings in fl(fl(fl(bound*m2)*m2)*m)).",
+    ]))
+    s3.defs.append("# inputs: the minors (degree 3) and lifts (degree 2), with their exact values")
+    for n in ["abc", "bcd", "cda", "dab"]:
+        s3.imported(n, 3, *e1[n], "insphere_minors")
+    for n in ["alift", "blift", "clift", "dlift"]:
+        s3.imported(n, 2, *e2[n], "insphere_lifts")
+    s3.comment("det = (dlift * abc - clift * dab) + (blift * cda - alift * bcd)")
+    s3.mul("w1", "dlift", "abc"); s3.mul("w2", "clift", "dab"); s3.add("v1", "w1", "w2", "-")
+    s3.mul("w3", "blift", "cda"); s3.mul("w4", "alift", "bcd"); s3.add("v2", "w3", "w4", "-")
+    s3.add("det", "v1", "v2")
+    t3, _ = finish(s3, "det")
+    return [("insphere_minors", t1), ("insphere_lifts", t2), ("insphere", t3)]
+
+
+def main():
+    args = [a for a in sys.argv[1:] if not a.startswith("--")]
+    dry = "--dry-run" in sys.argv
+    gens = {"orient2d": orient2d, "orient3d": orient3d, "incircle": incircle, "insphere": insphere}
+    for name in (args or list(gens)):
+        for fname, text in gens[name]():
+            path = os.path.join(HERE, fname + ".g")
+            if dry:
+                sys.stdout.write(f"==== {path}\n{text}")
+            else:
+                with open(path, "w") as f:
+                    f.write(text)
+                print("wrote", path)
+
+
+if __name__ == "__main__":
+    main()
