@@ -55,9 +55,14 @@ const char* name(Impl i) {
     case Impl::exact: return "exact";
     case Impl::prototype: return "prototype";
     case Impl::prototype_ozaki: return "prototype_ozaki";
+    case Impl::prototype_fastexact: return "prototype_fastexact";
     case Impl::shewchuk: return "shewchuk";
   }
   return "?";
+}
+
+bool orient2d_only(Impl i) {
+  return i == Impl::prototype_ozaki || i == Impl::prototype_fastexact;
 }
 
 struct Prepared {
@@ -84,9 +89,10 @@ void cross_check(Prepared& s) {
                  name(p), what, s.data.near_degenerate ? " (near-degenerate)" : "", i);
     std::exit(2);
   };
-  for (Impl impl : {Impl::filtered, Impl::prototype, Impl::prototype_ozaki, Impl::shewchuk}) {
+  for (Impl impl : {Impl::filtered, Impl::prototype, Impl::prototype_ozaki,
+                    Impl::prototype_fastexact, Impl::shewchuk}) {
     if (impl == Impl::shewchuk && !CERTIMESH_BENCH_HAVE_SHEWCHUK) continue;
-    if (impl == Impl::prototype_ozaki && p != Predicate::orient2d) continue;
+    if (orient2d_only(impl) && p != Predicate::orient2d) continue;
     certimesh_signs(p, impl, s.data.points(), n, other.data());
     for (std::size_t i = 0; i < n; ++i)
       if (other[i] != exact[i]) fail(name(impl), i);
@@ -142,9 +148,10 @@ void register_all(std::vector<Prepared*>& sets) {
       }
       set_counters(state, s->data.ntuples);
     });
-    for (Impl impl : {Impl::prototype, Impl::prototype_ozaki, Impl::shewchuk}) {
+    for (Impl impl : {Impl::prototype, Impl::prototype_ozaki, Impl::prototype_fastexact,
+                      Impl::shewchuk}) {
       if (impl == Impl::shewchuk && !CERTIMESH_BENCH_HAVE_SHEWCHUK) continue;
-      if (impl == Impl::prototype_ozaki && p != Predicate::orient2d) continue;
+      if (orient2d_only(impl) && p != Predicate::orient2d) continue;
       const std::string bm = std::string("BM_") + name(p) + "_" + name(impl) + suffix;
       benchmark::RegisterBenchmark(bm.c_str(), [s, p, impl](benchmark::State& state) {
         const void* pts = s->data.points();

@@ -144,6 +144,10 @@ long long dispatch(Predicate p, Impl impl, const void* pts, std::size_t n, std::
         case Impl::prototype_ozaki:
           return run<3, Point2>(
               pts, n, out, CM_LAMBDA2(cp::to_int(prototype::orient2d_ozaki(t[0], t[1], t[2]))));
+        case Impl::prototype_fastexact:
+          return run<3, Point2>(
+              pts, n, out,
+              CM_LAMBDA2(cp::to_int(prototype::orient2d_fastexact(t[0], t[1], t[2]))));
         case Impl::shewchuk:
           return run<3, Point2>(pts, n, out, CM_LAMBDA2(sk_orient2d(t)));
       }
@@ -166,6 +170,7 @@ long long dispatch(Predicate p, Impl impl, const void* pts, std::size_t n, std::
           return run<4, Point3>(
               pts, n, out, CM_LAMBDA3(cp::to_int(prototype::orient3d(t[0], t[1], t[2], t[3]))));
         case Impl::prototype_ozaki:
+        case Impl::prototype_fastexact:
           break;  // orient2d only
         case Impl::shewchuk:
           return run<4, Point3>(pts, n, out, CM_LAMBDA3(sk_orient3d(t)));
@@ -189,6 +194,7 @@ long long dispatch(Predicate p, Impl impl, const void* pts, std::size_t n, std::
           return run<4, Point2>(
               pts, n, out, CM_LAMBDA2(cp::to_int(prototype::incircle(t[0], t[1], t[2], t[3]))));
         case Impl::prototype_ozaki:
+        case Impl::prototype_fastexact:
           break;  // orient2d only
         case Impl::shewchuk:
           return run<4, Point2>(pts, n, out, CM_LAMBDA2(sk_incircle(t)));
@@ -214,6 +220,7 @@ long long dispatch(Predicate p, Impl impl, const void* pts, std::size_t n, std::
               pts, n, out,
               CM_LAMBDA3(cp::to_int(prototype::insphere(t[0], t[1], t[2], t[3], t[4]))));
         case Impl::prototype_ozaki:
+        case Impl::prototype_fastexact:
           break;  // orient2d only
         case Impl::shewchuk:
           return run<5, Point3>(pts, n, out, CM_LAMBDA3(sk_insphere(t)));

@@ -24,12 +24,20 @@
 // (uncertain); the DBL_MIN term is a deliberately generous allowance for underflow in
 // the two products. theta is the JTS/GEOS literal (3u rounded up). Adopting it in the
 // kernel would need its own Gappa proof, like every other constant there.
+//
+// BM_orient2d_prototype_fastexact: the Ozaki-style filter, then -- when every coordinate
+// difference is exact and its magnitude 0 or within [2^-480, 2^500] -- the exact sign of
+// acx*bcy - acy*bcx without expansions: rounding is monotone, so fl(p) > fl(q) implies
+// p > q; only when the two rounded products tie does the sign come from their TwoProduct
+// tails (exact in that range), whose rounded difference has the exact sign. Anything
+// else goes to certimesh's exact stage.
 #pragma once
 
 #include <algorithm>
 #include <cmath>
 
 #include "certimesh/predicates/detail/exact_stages.h"
+#include "certimesh/predicates/detail/expansion.h"
 #include "certimesh/predicates/filter_constants.h"
 #include "certimesh/predicates/point.h"
 #include "certimesh/predicates/sign.h"
@@ -60,14 +68,19 @@ inline Sign orient2d(const Point2& a, const Point2& b, const Point2& c) {
   return cd::orient2d_exact_stage(a, b, c);
 }
 
-inline Sign orient2d_ozaki(const Point2& a, const Point2& b, const Point2& c) {
+// The Ozaki-style filter alone: positive / negative when certain, zero when uncertain.
+inline Sign orient2d_ozaki_filter(const Point2& a, const Point2& b, const Point2& c) {
   constexpr double theta = 3.3306690621773724e-16;  // Ozaki et al.'s theta, rounded up
   constexpr double underflow_allowance = 0x1p-1022;  // DBL_MIN
   const double dl = (a.x - c.x) * (b.y - c.y);
   const double dr = (a.y - c.y) * (b.x - c.x);
   const double det = dl - dr;
-  const int s = certify_bits(det, theta * std::fabs(dl + dr) + underflow_allowance);
-  if (s != 0) [[likely]] return static_cast<Sign>(s);
+  return static_cast<Sign>(certify_bits(det, theta * std::fabs(dl + dr) + underflow_allowance));
+}
+
+inline Sign orient2d_ozaki(const Point2& a, const Point2& b, const Point2& c) {
+  const Sign f = orient2d_ozaki_filter(a, b, c);
+  if (f != Sign::zero) [[likely]] return f;
   return cd::orient2d_exact_stage(a, b, c);
 }
 
@@ -138,6 +151,34 @@ inline Sign insphere(const Point3& a, const Point3& b, const Point3& c, const Po
   const bool ok = (m >= k::insphere_lower_guard) & (m <= k::insphere_upper_guard) & (s != 0);
   if (ok) [[likely]] return static_cast<Sign>(s);
   return cd::insphere_exact_stage(a, b, c, d, e);
+}
+
+// Exact difference x = a - b (tail zero) with |x| zero or in [2^-480, 2^500].
+inline bool exact_in_range(double a, double b, double& x) {
+  double tail;
+  cd::two_diff(a, b, x, tail);
+  const double m = std::fabs(x);
+  return (tail == 0.0) & ((m == 0.0) | ((m >= 0x1p-480) & (m <= 0x1p500)));
+}
+
+// Sign of p*q - r*s, exact for doubles whose non-zero magnitudes lie in [2^-480, 2^500].
+inline int product_difference_sign(double p, double q, double r, double s) {
+  double x1, y1, x2, y2;
+  cd::two_product(p, q, x1, y1);
+  cd::two_product(r, s, x2, y2);
+  if (x1 != x2) return x1 > x2 ? 1 : -1;
+  const double t = y1 - y2;
+  return static_cast<int>(t > 0.0) - static_cast<int>(t < 0.0);
+}
+
+inline Sign orient2d_fastexact(const Point2& a, const Point2& b, const Point2& c) {
+  const Sign f = orient2d_ozaki_filter(a, b, c);
+  if (f != Sign::zero) [[likely]] return f;
+  double acx, bcx, acy, bcy;
+  const bool fast = exact_in_range(a.x, c.x, acx) & exact_in_range(b.x, c.x, bcx) &
+                    exact_in_range(a.y, c.y, acy) & exact_in_range(b.y, c.y, bcy);
+  if (fast) return static_cast<Sign>(product_difference_sign(acx, bcy, acy, bcx));
+  return cd::orient2d_exact_stage(a, b, c);
 }
 
 }  // namespace certimesh_bench::prototype

@@ -108,9 +108,9 @@ def main():
         pct = lambda v: "—" if v is None else f"{100 * v:.1f} %"
         lim = 1.0 if p == "orient3d" else None
         extra = ""
-        oz = g(p, "prototype_ozaki", sfx)
+        oz, fe = g(p, "prototype_ozaki", sfx), g(p, "prototype_fastexact", sfx)
         if oz is not None:
-            extra = f" (ozaki: {fmt(oz)})"
+            extra = f" (ozaki: {fmt(oz)}; fastexact: {fmt(fe)})"
         print(f"| {p} | {pct(wrong)} | {pct(unc)} | {fmt(n)} | **{fmt(f)}** | {fmt(e)} | "
               f"{fmt(c)} | {fmt(s)} | {fmt(pr)}{extra} | {r(ratio(e, c), lim)} | {r(ratio(f, c))} | "
               f"{r(ratio(s, c))} |")
