@@ -17,10 +17,12 @@
 
 namespace certimesh::predicates::detail {
 
-inline FilteredSign certify(double det, double error_bound) noexcept {
-  if (det > error_bound) return FilteredSign::positive;
-  if (det < -error_bound) return FilteredSign::negative;
-  return FilteredSign::uncertain;
+// Branch-free on purpose: on random input the sign of det is a coin flip, and a branch on
+// it mispredicts every other call (bench/RESULTS.md measured it as most of the filter's
+// cost). Comparisons with NaN are false, so NaN gives `uncertain`.
+inline FilteredSign certify(bool in_range, double det, double error_bound) noexcept {
+  const int s = static_cast<int>(det > error_bound) - static_cast<int>(det < -error_bound);
+  return static_cast<FilteredSign>(s * static_cast<int>(in_range));
 }
 
 inline FilteredSign orient2d_filter(const Point2& a, const Point2& b, const Point2& c) noexcept {
@@ -31,9 +33,8 @@ inline FilteredSign orient2d_filter(const Point2& a, const Point2& b, const Poin
   const double maxx = std::max(std::fabs(acx), std::fabs(bcx));
   const double maxy = std::max(std::fabs(acy), std::fabs(bcy));
   const double lo = std::min(maxx, maxy), hi = std::max(maxx, maxy);
-  if (!(lo >= k::orient2d_lower_guard && hi <= k::orient2d_upper_guard))
-    return FilteredSign::uncertain;
-  return certify(det, k::orient2d_error_bound * maxx * maxy);
+  const bool in_range = (lo >= k::orient2d_lower_guard) & (hi <= k::orient2d_upper_guard);
+  return certify(in_range, det, k::orient2d_error_bound * maxx * maxy);
 }
 
 inline FilteredSign orient3d_filter(const Point3& a, const Point3& b, const Point3& c,
@@ -49,9 +50,8 @@ inline FilteredSign orient3d_filter(const Point3& a, const Point3& b, const Poin
   const double maxz = std::max(std::max(std::fabs(adz), std::fabs(bdz)), std::fabs(cdz));
   const double lo = std::min(std::min(maxx, maxy), maxz);
   const double hi = std::max(std::max(maxx, maxy), maxz);
-  if (!(lo >= k::orient3d_lower_guard && hi <= k::orient3d_upper_guard))
-    return FilteredSign::uncertain;
-  return certify(det, k::orient3d_error_bound * maxx * maxy * maxz);
+  const bool in_range = (lo >= k::orient3d_lower_guard) & (hi <= k::orient3d_upper_guard);
+  return certify(in_range, det, k::orient3d_error_bound * maxx * maxy * maxz);
 }
 
 inline FilteredSign incircle_filter(const Point2& a, const Point2& b, const Point2& c,
@@ -67,10 +67,9 @@ inline FilteredSign incircle_filter(const Point2& a, const Point2& b, const Poin
   const double maxx = std::max(std::max(std::fabs(adx), std::fabs(bdx)), std::fabs(cdx));
   const double maxy = std::max(std::max(std::fabs(ady), std::fabs(bdy)), std::fabs(cdy));
   const double m = std::max(maxx, maxy);
-  if (!(m >= k::incircle_lower_guard && m <= k::incircle_upper_guard))
-    return FilteredSign::uncertain;
+  const bool in_range = (m >= k::incircle_lower_guard) & (m <= k::incircle_upper_guard);
   const double m2 = m * m;
-  return certify(det, k::incircle_error_bound * m2 * m2);
+  return certify(in_range, det, k::incircle_error_bound * m2 * m2);
 }
 
 inline FilteredSign insphere_filter(const Point3& a, const Point3& b, const Point3& c,
@@ -101,10 +100,9 @@ inline FilteredSign insphere_filter(const Point3& a, const Point3& b, const Poin
   const double mz = std::max(std::max(std::fabs(aez), std::fabs(bez)),
                              std::max(std::fabs(cez), std::fabs(dez)));
   const double m = std::max(std::max(mx, my), mz);
-  if (!(m >= k::insphere_lower_guard && m <= k::insphere_upper_guard))
-    return FilteredSign::uncertain;
+  const bool in_range = (m >= k::insphere_lower_guard) & (m <= k::insphere_upper_guard);
   const double m2 = m * m;
-  return certify(det, k::insphere_error_bound * m2 * m2 * m);
+  return certify(in_range, det, k::insphere_error_bound * m2 * m2 * m);
 }
 
 }  // namespace certimesh::predicates::detail
