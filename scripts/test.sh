@@ -2,8 +2,9 @@
 # The test suite, as CI runs it (.ci/run calls exactly this):
 #   1. build/       : configure with warnings as errors, build everything, ctest
 #   2. build-asan/  : the same suite built and run once more under AddressSanitizer and
-#                     UndefinedBehaviorSanitizer (benchmarks off; tests labelled `slow` or
-#                     `no-sanitize` are left out, see CERTIMESH_ASAN_EXCLUDE below)
+#                     UndefinedBehaviorSanitizer (benchmarks off; tests labelled `slow`,
+#                     `no-sanitize` or `proofs` (Gappa/Coq: no certimesh code runs) are left
+#                     out, see CERTIMESH_ASAN_EXCLUDE below)
 # Stops at the first failing stage; the exit status is that stage's. ctest's summary is the
 # last thing printed. Environment: CERTIMESH_JOBS (default: nproc), CERTIMESH_SKIP_ASAN=1
 # to run stage 1 only, CERTIMESH_ASAN_EXCLUDE (a ctest label regex), CERTIMESH_BUILD_DIR and
@@ -44,4 +45,4 @@ export ASAN_OPTIONS=${ASAN_OPTIONS:-detect_stack_use_after_return=1:strict_strin
 export UBSAN_OPTIONS=${UBSAN_OPTIONS:-print_stacktrace=1:halt_on_error=1}
 stamp "stage 2: ctest under sanitizers"
 exec ctest --test-dir "$asan" --output-on-failure -j"$jobs" \
-     --label-exclude "${CERTIMESH_ASAN_EXCLUDE:-^(slow|no-sanitize)$}" "${extra_ctest_args[@]}"
+     --label-exclude "${CERTIMESH_ASAN_EXCLUDE:-^(slow|no-sanitize|proofs)$}" "${extra_ctest_args[@]}"
