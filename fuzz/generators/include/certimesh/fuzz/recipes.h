@@ -661,14 +661,11 @@ template <class D> InsphereInput near_insphere(D& d) {
   return d.below(2) ? nextafter_perturbation(exact_insphere(d), d) : rounded_insphere(d);
 }
 
-/// Bit patterns (2/3) or exponent-mixed scales (1/3). The exact stage of the lifted
-/// predicates costs up to ~0.1 s on a full-range spread (5x5 determinants of ~4000-bit
-/// integers), so for them the full span is drawn 1 time in 4 and +-200 otherwise.
+/// Bit patterns (2/3) or exponent-mixed scales over the whole range (1/3).
 template <std::size_t N, std::size_t Dim, class D>
 Config<N, Dim> generic_config(D& d) {
   if (d.below(3) != 0) return bit_pattern<N, Dim>(d);
-  const bool lifted_cost = N + Dim >= 7;  // incircle (4, 2) cheap enough; insphere (5, 3) not
-  return mixed_scale<N, Dim>(d, (!lifted_cost || d.below(4) == 0) ? 1074 : 200);
+  return mixed_scale<N, Dim>(d, 1074);
 }
 
 /// The full mixture for one predicate: 40 % exact, 40 % near, 20 % generic.
