@@ -724,7 +724,7 @@ struct DecodedInput {
   Orient3dInput o3;
   IncircleInput ic;
   InsphereInput is;
-  bool raw_non_finite = false;  // coordinates replaced by raw bit patterns (may be NaN/Inf)
+  bool raw_non_finite = false;  // one coordinate replaced by NaN, +-Inf or raw bits
 };
 
 inline DecodedInput decode(const std::uint8_t* data, std::size_t size) {
@@ -737,10 +737,14 @@ inline DecodedInput decode(const std::uint8_t* data, std::size_t size) {
     case 2: in.ic = any_incircle(src); break;
     default: in.is = any_insphere(src); break;
   }
-  // 1 in 32: overwrite one coordinate with a raw bit pattern (NaN, Inf, anything).
-  if (src.below(32) == 0) {
+  // 1 in 32: overwrite one coordinate with NaN, +Inf, -Inf or a raw bit pattern. (31, not
+  // 0, so that exhausted input -- all zeros -- leaves the configuration alone.)
+  if (src.below(32) == 31) {
     in.raw_non_finite = true;
-    const double v = draw_double(src, DoubleClass::anything);
+    constexpr double inf = std::numeric_limits<double>::infinity();
+    const double special[] = {std::numeric_limits<double>::quiet_NaN(), inf, -inf,
+                              draw_double(src, DoubleClass::anything)};
+    const double v = special[src.below(4)];
     const std::size_t i = src.below(5), k = src.below(3);
     switch (in.predicate) {
       case 0: in.o2.p[i % 3][k % 2] = v; break;
