@@ -49,4 +49,19 @@ inline constexpr double insphere_error_bound = 0x1.140000000000bp-43;  // 1.2256
 inline constexpr double insphere_lower_guard = 0x1p-190;
 inline constexpr double insphere_upper_guard = 0x1p+200;
 
+// Second stages of the exact predicates (predicates/src/orient2d.cpp, orient3d.cpp), tried
+// before full expansion arithmetic. With rounded differences h and their exact tails t
+// (h + t exact), E = det(h) in exact arithmetic plus the first-order tail correction
+// evaluated in double; the sign of E is certified when |E| > bound * (product of the
+// maxima of |h|, one per axis, evaluated in double left to right), the maxima inside the
+// filter's guards, compared exactly. The proofs bound the rounding error of the correction
+// plus the exact higher-order tail terms by E2 * (product of maxima); bound is
+// E2 / (1 - 2^-53)^r rounded up as above, after adding 2^-1074 / lower_guard^degree to E2
+// because the last rounding of the bound's computation can underflow at the lower guard
+// (proofs/README.md, section 9).
+// orient2d: proofs/gappa/orient2d_stage2.g: E2 = 0x1.c080000000001p-103 (about 14.0 * 2^-106).
+inline constexpr double orient2d_stage2_bound = 0x1.c0a0000000003p-103;  // 1.728040642601448e-31
+// orient3d: proofs/gappa/orient3d_stage2.g: E2 = 0x1.0812000000002p-99 (about 132.0 * 2^-106).
+inline constexpr double orient3d_stage2_bound = 0x1.0814000000004p-99;  // 1.627507099504435e-30
+
 }  // namespace certimesh::predicates::filter_constants
