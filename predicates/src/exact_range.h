@@ -11,22 +11,33 @@
 //    keeps everything finite.
 #pragma once
 
+#include <algorithm>
+#include <bit>
 #include <cmath>
+#include <cstdint>
 #include <span>
 
 namespace certimesh::predicates::detail {
 
+/// The biased binary exponent field of a finite double (0 for zero and subnormals).
+inline int biased_exponent(double v) noexcept {
+  return static_cast<int>((std::bit_cast<std::uint64_t>(v) >> 52) & 0x7ff);
+}
+
 inline bool expansion_safe(std::span<const double> values, int degree) noexcept {
-  int max_exponent = -1100;  // of the largest |value|
-  int min_ulp_exponent = 2000;
+  // Biased exponents: a normal v has 2^(b-1023) <= |v| < 2^(b-1022) and ulp 2^(b-1075);
+  // a subnormal (b == 0) has ulp 2^-1074.
+  int max_biased = -1;
+  int min_biased = 4096;
   for (double v : values) {
     if (v == 0.0) continue;
-    const int e = std::ilogb(v);
-    if (e > max_exponent) max_exponent = e;
-    const int ulp_exponent = e - 52 < -1074 ? -1074 : e - 52;
-    if (ulp_exponent < min_ulp_exponent) min_ulp_exponent = ulp_exponent;
+    const int b = biased_exponent(v);
+    max_biased = std::max(max_biased, b);
+    min_biased = std::min(min_biased, b);
   }
-  if (max_exponent == -1100) return true;  // all zero
+  if (max_biased < 0) return true;  // all zero
+  const int max_exponent = max_biased == 0 ? -1023 : max_biased - 1023;
+  const int min_ulp_exponent = min_biased == 0 ? -1074 : min_biased - 1075;
   const bool no_overflow = degree * (max_exponent + 1) <= 1023 - 40;
   const bool no_underflow = min_ulp_exponent >= 0 || degree * min_ulp_exponent >= -1074;
   return no_overflow && no_underflow;

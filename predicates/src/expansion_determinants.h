@@ -33,6 +33,15 @@ inline Expansion<6> lift3(double x, double y, double z) noexcept {
   return (exact_product(x, x) + exact_product(y, y)) + exact_product(z, z);
 }
 
+/// The sign of the exact value e when |e| > bound, zero otherwise (compared exactly).
+template <std::size_t N>
+Sign sign_beyond(const Expansion<N>& e, double bound) noexcept {
+  const Sign s = e.sign();
+  if (s == Sign::positive) return (e - expansion_of(bound)).sign() == Sign::positive ? s : Sign::zero;
+  if (s == Sign::negative) return (e + expansion_of(bound)).sign() == Sign::negative ? s : Sign::zero;
+  return Sign::zero;
+}
+
 struct Raw3 {
   double x, y, z;
 };
