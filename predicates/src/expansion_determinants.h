@@ -12,9 +12,22 @@
 
 namespace certimesh::predicates::detail {
 
-/// ui*vj - uj*vi.
+/// ui*vj - uj*vi, as four non-overlapping components (zeros kept: the later sums drop
+/// them). Branch-free: Shewchuk's Two_Two_Diff on the two exact products.
 inline Expansion<4> minor2(double ui, double vi, double uj, double vj) noexcept {
-  return exact_product(ui, vj) - exact_product(uj, vi);
+  double p1, p0, q1, q0;
+  two_product(ui, vj, p1, p0);
+  two_product(uj, vi, q1, q0);
+  // (p1 + p0) - q0 = j + x0, then (j + x1') - q1.
+  double i, j, k, x0, x1, x2, x3;
+  two_diff(p0, q0, i, x0);
+  two_sum(p1, i, j, k);
+  two_diff(k, q1, i, x1);
+  two_sum(j, i, x3, x2);
+  Expansion<4> e;
+  e.c = {x0, x1, x2, x3};
+  e.n = 4;
+  return e;
 }
 
 /// det[ui vi 1; uj vj 1; uk vk 1], expanded along the column of ones.

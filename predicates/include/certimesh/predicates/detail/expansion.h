@@ -59,18 +59,20 @@ inline void two_product(double a, double b, double& x, double& y) noexcept {
 
 // ---- expansions -----------------------------------------------------------------------
 
-/// An exact value sum(c[0..n)), components non-overlapping and increasing in magnitude,
-/// zero components eliminated (so n == 0 means the value 0).
+/// An exact value sum(c[0..n)), components non-overlapping and increasing in magnitude.
+/// The operations below eliminate zero components from their results.
 template <std::size_t N>
 struct Expansion {
   static constexpr std::size_t capacity = N;
   std::array<double, N> c;
   std::size_t n = 0;
 
-  /// The sign of the value is the sign of its largest component.
+  /// The sign of the value is the sign of its largest non-zero component. (Results of
+  /// the sums and scalings have no zero components; minor2 in the kernel keeps them.)
   Sign sign() const noexcept {
-    if (n == 0) return Sign::zero;
-    return c[n - 1] > 0 ? Sign::positive : Sign::negative;
+    for (std::size_t i = n; i > 0; --i)
+      if (c[i - 1] != 0.0) return c[i - 1] > 0 ? Sign::positive : Sign::negative;
+    return Sign::zero;
   }
   /// Approximation of the value (the largest component carries it to within an ulp).
   double estimate() const noexcept {
