@@ -7,8 +7,8 @@
 //              filteronly certimesh X_filtered(): the filter alone (may be uncertain)
 //              exact      certimesh detail::X_exact_stage(): exact stage, no filter
 //              cgal       CGAL Epick orientation / side_of_oriented_circle / sphere
-//              prototype  a bench-only filter variant (prototype_filters.h); NOT
-//                         certimesh's number
+//              prototype_ozaki, prototype_fastexact  orient2d-only bench prototypes
+//                         (prototype_filters.h); NOT certimesh's number
 //              shewchuk   Shewchuk's adaptive predicates.c, an optional reference peer
 //                         for the exact stages (only when built with
 //                         CERTIMESH_BENCH_SHEWCHUK_SOURCE); NOT certimesh's number
@@ -53,7 +53,6 @@ const char* name(Impl i) {
     case Impl::filtered: return "filtered";
     case Impl::filteronly: return "filteronly";
     case Impl::exact: return "exact";
-    case Impl::prototype: return "prototype";
     case Impl::prototype_ozaki: return "prototype_ozaki";
     case Impl::prototype_fastexact: return "prototype_fastexact";
     case Impl::shewchuk: return "shewchuk";
@@ -70,7 +69,6 @@ struct Prepared {
   CgalPoints cgal;
   double naive_wrong = 0;        // fraction of tuples where naive's sign is wrong
   double filter_uncertain = 0;   // fraction where X_filtered is uncertain
-  double proto_uncertain = 0;    // same for the prototype (its filter stage)
   Prepared(Predicate p, bool nd)
       : data(make_dataset(p, nd, g_tuples)), cgal(p, data.points(), g_tuples) {}
 };
@@ -89,7 +87,7 @@ void cross_check(Prepared& s) {
                  name(p), what, s.data.near_degenerate ? " (near-degenerate)" : "", i);
     std::exit(2);
   };
-  for (Impl impl : {Impl::filtered, Impl::prototype, Impl::prototype_ozaki,
+  for (Impl impl : {Impl::filtered, Impl::prototype_ozaki,
                     Impl::prototype_fastexact, Impl::shewchuk}) {
     if (impl == Impl::shewchuk && !CERTIMESH_BENCH_HAVE_SHEWCHUK) continue;
     if (orient2d_only(impl) && p != Predicate::orient2d) continue;
@@ -148,7 +146,7 @@ void register_all(std::vector<Prepared*>& sets) {
       }
       set_counters(state, s->data.ntuples);
     });
-    for (Impl impl : {Impl::prototype, Impl::prototype_ozaki, Impl::prototype_fastexact,
+    for (Impl impl : {Impl::prototype_ozaki, Impl::prototype_fastexact,
                       Impl::shewchuk}) {
       if (impl == Impl::shewchuk && !CERTIMESH_BENCH_HAVE_SHEWCHUK) continue;
       if (orient2d_only(impl) && p != Predicate::orient2d) continue;

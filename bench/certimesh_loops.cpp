@@ -138,9 +138,6 @@ long long dispatch(Predicate p, Impl impl, const void* pts, std::size_t n, std::
         case Impl::exact:
           return run<3, Point2>(pts, n, out,
                                 CM_LAMBDA2(cp::to_int(cd::orient2d_exact_stage(t[0], t[1], t[2]))));
-        case Impl::prototype:
-          return run<3, Point2>(pts, n, out,
-                                CM_LAMBDA2(cp::to_int(prototype::orient2d(t[0], t[1], t[2]))));
         case Impl::prototype_ozaki:
           return run<3, Point2>(
               pts, n, out, CM_LAMBDA2(cp::to_int(prototype::orient2d_ozaki(t[0], t[1], t[2]))));
@@ -166,9 +163,6 @@ long long dispatch(Predicate p, Impl impl, const void* pts, std::size_t n, std::
           return run<4, Point3>(
               pts, n, out,
               CM_LAMBDA3(cp::to_int(cd::orient3d_exact_stage(t[0], t[1], t[2], t[3]))));
-        case Impl::prototype:
-          return run<4, Point3>(
-              pts, n, out, CM_LAMBDA3(cp::to_int(prototype::orient3d(t[0], t[1], t[2], t[3]))));
         case Impl::prototype_ozaki:
         case Impl::prototype_fastexact:
           break;  // orient2d only
@@ -190,9 +184,6 @@ long long dispatch(Predicate p, Impl impl, const void* pts, std::size_t n, std::
           return run<4, Point2>(
               pts, n, out,
               CM_LAMBDA2(cp::to_int(cd::incircle_exact_stage(t[0], t[1], t[2], t[3]))));
-        case Impl::prototype:
-          return run<4, Point2>(
-              pts, n, out, CM_LAMBDA2(cp::to_int(prototype::incircle(t[0], t[1], t[2], t[3]))));
         case Impl::prototype_ozaki:
         case Impl::prototype_fastexact:
           break;  // orient2d only
@@ -215,10 +206,6 @@ long long dispatch(Predicate p, Impl impl, const void* pts, std::size_t n, std::
           return run<5, Point3>(
               pts, n, out,
               CM_LAMBDA3(cp::to_int(cd::insphere_exact_stage(t[0], t[1], t[2], t[3], t[4]))));
-        case Impl::prototype:
-          return run<5, Point3>(
-              pts, n, out,
-              CM_LAMBDA3(cp::to_int(prototype::insphere(t[0], t[1], t[2], t[3], t[4]))));
         case Impl::prototype_ozaki:
         case Impl::prototype_fastexact:
           break;  // orient2d only

@@ -16,8 +16,7 @@ using certimesh::predicates::Point3;
 
 enum class Predicate { orient2d, orient3d, incircle, insphere };
 // naive: double determinant, same formula as the filter; filtered: certimesh X();
-// filteronly: certimesh X_filtered(); exact: detail::X_exact_stage(); prototype: a
-// bench-only filter variant (not certimesh's number); prototype_ozaki: orient2d only,
+// filteronly: certimesh X_filtered(); exact: detail::X_exact_stage(); prototype_ozaki: orient2d only,
 // an Ozaki-style filter; prototype_fastexact: orient2d only, that filter plus an
 // expansion-free exact path for exact differences (neither is certimesh's number); shewchuk: Shewchuk's adaptive
 // predicates.c (reference peer, one out-of-line C call per predicate).
@@ -26,7 +25,6 @@ enum class Impl {
   filtered,
   filteronly,
   exact,
-  prototype,
   prototype_ozaki,
   prototype_fastexact,
   shewchuk
