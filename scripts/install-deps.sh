@@ -14,6 +14,8 @@ packages=(
   clang libclang-rt-14-dev binutils           # fuzzers, sanitizer runtimes, object-code scan
   python3 python3-meshio python3-numpy        # CLI and format tests (/usr/bin/python3)
   time                                        # /usr/bin/time -v in the constant-memory test
+  gmsh                                        # interop: Gmsh must read what certimesh writes
+  libssl-dev                                  # SHA-256 of the mesh in the certificate
 )
 
 missing=()

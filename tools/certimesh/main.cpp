@@ -21,6 +21,13 @@ constexpr const char* kHelp =
     "  predicates [--mode exact|filter|sos] [--line-buffered]\n"
     "                       batch predicates: one query per stdin line, one answer per\n"
     "                       stdout line (default mode: exact)\n"
+    "  convert IN OUT       convert a mesh between formats, chosen by extension:\n"
+    "                       .node/.ele/.face/.poly (Triangle, TetGen), .mesh (Medit),\n"
+    "                       .msh (Gmsh 4.1 ASCII), .vtu (VTK XML, for ParaView)\n"
+    "  check MESH [--domain DOMAIN] [--certificate OUT.json]\n"
+    "                       certify MESH exactly: oriented elements, conforming facets, an\n"
+    "                       embedded boundary, a single cover; with DOMAIN (.poly in 2D, a\n"
+    "                       closed surface mesh in 3D) also that MESH tiles exactly DOMAIN\n"
     "  --help, -h           this text\n"
     "  --version            the version\n"
     "\n"
@@ -42,8 +49,8 @@ constexpr const char* kHelp =
     "Blank lines and `#` comments are skipped. A malformed line prints `error: line N: why`\n"
     "on stderr and nothing on stdout; processing continues.\n"
     "\n"
-    "exit status: 0 success; 1 some input line was rejected (predicates) or the demo found a\n"
-    "disagreement; 2 usage error.\n";
+    "exit status: 0 success; 1 some input line was rejected (predicates), the demo found a\n"
+    "disagreement, or check found the mesh invalid; 2 usage error or unreadable input.\n";
 
 int usage_error(const char* fmt, const char* arg) {
   std::fputs("error: ", stderr);
@@ -99,6 +106,27 @@ int main(int argc, char** argv) {
       }
     }
     return certimesh::cli::run_batch(options);
+  }
+  if (command == "convert") {
+    if (argc != 4) return usage_error("convert takes IN and OUT, got %s", argc < 4 ? "fewer" : "more");
+    return certimesh::cli::run_convert(argv[2], argv[3]);
+  }
+  if (command == "check") {
+    certimesh::cli::CheckOptions options;
+    for (int i = 2; i < argc; ++i) {
+      const std::string_view arg = argv[i];
+      if (arg == "--domain" && i + 1 < argc) {
+        options.domain = argv[++i];
+      } else if (arg == "--certificate" && i + 1 < argc) {
+        options.certificate = argv[++i];
+      } else if (!arg.starts_with("--") && options.mesh.empty()) {
+        options.mesh = argv[i];
+      } else {
+        return usage_error("check: unexpected argument '%s'", argv[i]);
+      }
+    }
+    if (options.mesh.empty()) return usage_error("check needs a MESH file%s", "");
+    return certimesh::cli::run_check(options);
   }
   return usage_error("unknown command '%s'", argv[1]);
 }

@@ -1,0 +1,49 @@
+// The exchange form of a mesh or a domain as the file formats hold it: plain arrays, no
+// adjacency, no behaviour. Readers produce it, writers consume it; topology/ builds its mesh
+// model from it and certificate/ checks it. Indices are 0-based here (the 1-based formats
+// convert on reading and writing).
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+namespace certimesh::io {
+
+using Index = std::uint32_t;  // a vertex index; files naming an index >= 2^32 are refused
+using Label = std::int32_t;   // material, boundary or point marker; 0 when the file has none
+
+struct MeshData {
+  int dimension = 2;  // coordinates per point: 2 or 3
+
+  // Points: `dimension` coordinates each, interleaved (x0 y0 [z0] x1 y1 ...).
+  std::vector<double> coordinates;
+  std::vector<Label> point_labels;  // empty, or one per point
+
+  // Cells, `k` vertex indices each, with one label per cell (empty = all 0).
+  //   segments:   boundary/constraint edges (2D .poly segments, Gmsh/Medit edges)
+  //   triangles:  2D elements, or boundary/surface faces in 3D
+  //   tetrahedra: 3D elements
+  std::vector<Index> segments;
+  std::vector<Label> segment_labels;
+  std::vector<Index> triangles;
+  std::vector<Label> triangle_labels;
+  std::vector<Index> tetrahedra;
+  std::vector<Label> tetrahedron_labels;
+
+  // Domain description (.poly only): hole points (`dimension` coordinates each) and region
+  // points with their attribute (Triangle/TetGen regional attributes).
+  std::vector<double> holes;
+  std::vector<double> region_points;
+  std::vector<double> region_attributes;
+
+  std::size_t point_count() const { return coordinates.size() / static_cast<std::size_t>(dimension); }
+  std::size_t segment_count() const { return segments.size() / 2; }
+  std::size_t triangle_count() const { return triangles.size() / 3; }
+  std::size_t tetrahedron_count() const { return tetrahedra.size() / 4; }
+  std::size_t hole_count() const { return holes.size() / static_cast<std::size_t>(dimension); }
+
+  friend bool operator==(const MeshData&, const MeshData&) = default;
+};
+
+}  // namespace certimesh::io

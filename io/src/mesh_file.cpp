@@ -1,0 +1,77 @@
+#include "certimesh/io/mesh_file.h"
+
+#include <charconv>
+#include <cstdio>
+#include <fstream>
+#include <system_error>
+
+#include "certimesh/io/format_error.h"
+#include "certimesh/io/gmsh_format.h"
+#include "certimesh/io/medit_format.h"
+#include "certimesh/io/triangle_format.h"
+#include "certimesh/io/vtu_format.h"
+
+namespace certimesh::io {
+
+Format format_of(const std::filesystem::path& path) {
+  const std::string ext = path.extension().string();
+  if (ext == ".node" || ext == ".ele" || ext == ".face" || ext == ".poly") return Format::triangle;
+  if (ext == ".mesh") return Format::medit;
+  if (ext == ".msh") return Format::gmsh;
+  if (ext == ".vtu") return Format::vtu;
+  throw FormatError(path.string(), 0,
+                    "unknown mesh format '" + ext +
+                        "' (known: .node .ele .face .poly .mesh .msh .vtu)");
+}
+
+MeshData read_mesh(const std::filesystem::path& path) {
+  switch (format_of(path)) {
+    case Format::triangle: return read_triangle_format(path);
+    case Format::medit: return read_medit_format(path);
+    case Format::gmsh: return read_gmsh_format(path);
+    case Format::vtu: return read_vtu_format(path);
+  }
+  throw FormatError(path.string(), 0, "unreachable format");
+}
+
+void write_mesh(const MeshData& mesh, const std::filesystem::path& path) {
+  switch (format_of(path)) {
+    case Format::triangle: write_triangle_format(mesh, path); return;
+    case Format::medit: write_medit_format(mesh, path); return;
+    case Format::gmsh: write_gmsh_format(mesh, path); return;
+    case Format::vtu: write_vtu_format(mesh, path); return;
+  }
+}
+
+void write_file_atomically(const std::filesystem::path& path, const std::string& contents) {
+  // The temporary lives in the destination folder so that the rename cannot cross devices.
+  std::filesystem::path temporary = path;
+  temporary += ".certimesh-partial";
+  {
+    std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
+    if (!out) throw FormatError(path.string(), 0, "cannot open the file for writing");
+    out.write(contents.data(), static_cast<std::streamsize>(contents.size()));
+    out.flush();
+    if (!out) {
+      out.close();
+      std::error_code ignored;
+      std::filesystem::remove(temporary, ignored);
+      throw FormatError(path.string(), 0, "write error (disk full?)");
+    }
+  }
+  std::error_code ec;
+  std::filesystem::rename(temporary, path, ec);
+  if (ec) {
+    std::error_code ignored;
+    std::filesystem::remove(temporary, ignored);
+    throw FormatError(path.string(), 0, "cannot move the written file into place: " + ec.message());
+  }
+}
+
+void append_double(std::string& out, double value) {
+  char buffer[32];
+  const auto result = std::to_chars(buffer, buffer + sizeof buffer, value);
+  out.append(buffer, result.ptr);
+}
+
+}  // namespace certimesh::io

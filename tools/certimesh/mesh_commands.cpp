@@ -1,0 +1,96 @@
+// `certimesh convert` and `certimesh check`: file formats and the certificate, for a person.
+#include <cstdio>
+#include <exception>
+#include <optional>
+#include <string>
+
+#include "certimesh/certificate/check_mesh.h"
+#include "certimesh/io/format_error.h"
+#include "certimesh/io/mesh_file.h"
+#include "cli.h"
+
+#ifndef CERTIMESH_VERSION
+#define CERTIMESH_VERSION "unknown"
+#endif
+
+namespace certimesh::cli {
+
+namespace {
+
+// Reads a mesh, or prints `error: FILE:LINE: why` and returns nullopt.
+std::optional<io::MeshData> read_or_report(const std::string& path) {
+  try {
+    return io::read_mesh(path);
+  } catch (const io::FormatError& e) {
+    std::fprintf(stderr, "error: %s\n", e.what());
+  } catch (const std::bad_alloc&) {
+    std::fprintf(stderr, "error: %s: out of memory while reading\n", path.c_str());
+  }
+  return std::nullopt;
+}
+
+void print_statistics(const certificate::Statistics& s) {
+  std::printf("%dD mesh: %zu vertices, %zu elements, %zu interior and %zu boundary facets, "
+              "%zu boundary component(s)\n",
+              s.dimension, s.vertices, s.elements, s.interior_facets, s.boundary_facets,
+              s.boundary_components);
+  if (s.elements > 0) {
+    std::printf("worst quality %.6g (element %lld)\n", s.worst_quality,
+                static_cast<long long>(s.worst_element));
+  }
+  if (s.vertices_exactly_on_domain_boundary + s.vertices_in_rounding_box_only > 0) {
+    std::printf("boundary vertices on the domain boundary: %zu exactly, %zu within half an ulp "
+                "(largest deviation %.3g)\n",
+                s.vertices_exactly_on_domain_boundary, s.vertices_in_rounding_box_only,
+                s.max_boundary_deviation);
+  }
+}
+
+}  // namespace
+
+int run_convert(const std::string& input, const std::string& output) {
+  const std::optional<io::MeshData> mesh = read_or_report(input);
+  if (!mesh) return 2;
+  try {
+    io::write_mesh(*mesh, output);
+  } catch (const io::FormatError& e) {
+    std::fprintf(stderr, "error: %s\n", e.what());
+    return 2;
+  }
+  return 0;
+}
+
+int run_check(const CheckOptions& options) {
+  const std::optional<io::MeshData> mesh = read_or_report(options.mesh);
+  if (!mesh) return 2;
+  std::optional<io::MeshData> domain;
+  if (!options.domain.empty()) {
+    domain = read_or_report(options.domain);
+    if (!domain) return 2;
+  }
+  const certificate::Report report =
+      certificate::check_mesh(*mesh, domain ? &*domain : nullptr);
+  print_statistics(report.statistics);
+  if (report.valid) {
+    std::printf("valid: %s\n", options.domain.empty()
+                                   ? "every condition holds; the elements tile the region "
+                                     "their boundary encloses exactly once"
+                                   : "the elements tile the domain exactly once");
+  } else {
+    std::printf("invalid: %s: %s\n",
+                std::string(certificate::defect_name(report.finding.defect)).c_str(),
+                report.finding.message.c_str());
+  }
+  if (!options.certificate.empty()) {
+    try {
+      io::write_file_atomically(options.certificate,
+                                certificate::certificate_json(report, CERTIMESH_VERSION));
+    } catch (const io::FormatError& e) {
+      std::fprintf(stderr, "error: %s\n", e.what());
+      return 2;
+    }
+  }
+  return report.valid ? 0 : 1;
+}
+
+}  // namespace certimesh::cli
