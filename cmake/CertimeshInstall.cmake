@@ -13,14 +13,21 @@ set(CERTIMESH_INSTALL_CMAKEDIR ${CMAKE_INSTALL_LIBDIR}/cmake/certimesh
 set(CERTIMESH_INSTALL_PKGCONFIGDIR ${CMAKE_INSTALL_LIBDIR}/pkgconfig
     CACHE STRING "Where certimesh.pc is installed, relative to the prefix")
 
-install(TARGETS certimesh_predicates
+# The libraries, in dependency order: predicates <- io <- topology, certificate.
+set(CERTIMESH_INSTALLED_LIBRARIES certimesh_predicates certimesh_io certimesh_topology
+                                  certimesh_certificate)
+install(TARGETS ${CERTIMESH_INSTALLED_LIBRARIES}
         EXPORT certimeshTargets
         ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR}
         LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR}
         RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
-install(DIRECTORY ${PROJECT_SOURCE_DIR}/predicates/include/
-        DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}
-        FILES_MATCHING PATTERN "*.h")
+foreach(part predicates io topology certificate)
+  if(EXISTS ${PROJECT_SOURCE_DIR}/${part}/include)
+    install(DIRECTORY ${PROJECT_SOURCE_DIR}/${part}/include/
+            DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}
+            FILES_MATCHING PATTERN "*.h")
+  endif()
+endforeach()
 
 install(EXPORT certimeshTargets
         NAMESPACE certimesh::
@@ -42,7 +49,7 @@ install(FILES ${PROJECT_BINARY_DIR}/certimeshConfig.cmake
 # Requires.private keeps `pkg-config --static` and the include flags right either way.
 get_target_property(_certimesh_predicates_type certimesh_predicates TYPE)
 if(_certimesh_predicates_type STREQUAL "STATIC_LIBRARY")
-  set(CERTIMESH_PC_LIBS_EXTRA " -lgmpxx -lgmp")
+  set(CERTIMESH_PC_LIBS_EXTRA " -lgmpxx -lgmp -lcrypto")
 else()
   set(CERTIMESH_PC_LIBS_EXTRA "")
 endif()
