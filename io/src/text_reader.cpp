@@ -7,6 +7,7 @@ namespace certimesh::io::detail {
 
 namespace {
 bool is_space(char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\n' || c == '\f' || c == '\v'; }
+bool is_sign(char c) { return c == '+' || c == '-'; }
 }  // namespace
 
 TextReader::TextReader(const std::filesystem::path& path) : name_(path.string()) {
@@ -20,6 +21,19 @@ TextReader::TextReader(const std::filesystem::path& path) : name_(path.string())
 
 TextReader::TextReader(std::string name, std::string contents)
     : name_(std::move(name)), contents_(std::move(contents)) {}
+
+std::string TextReader::quoted(std::string_view token) {
+  // A hostile file may hold a megabyte-long token or binary bytes: the message stays short
+  // and printable.
+  constexpr std::size_t kMaxShown = 40;
+  std::string shown;
+  for (const char c : token.substr(0, kMaxShown)) {
+    const auto u = static_cast<unsigned char>(c);
+    shown += (u < 0x20 || u >= 0x7f) ? '?' : c;
+  }
+  if (token.size() > kMaxShown) shown += "...";
+  return "'" + shown + "'";
+}
 
 void TextReader::skip_blanks_and_comments() {
   while (pos_ < contents_.size()) {
@@ -37,8 +51,26 @@ void TextReader::skip_blanks_and_comments() {
   }
 }
 
+void TextReader::skip_blanks_on_line() {
+  while (pos_ < contents_.size() && contents_[pos_] != '\n') {
+    const char c = contents_[pos_];
+    if (is_space(c)) {
+      ++pos_;
+    } else if (comment_chars_.find(c) != std::string_view::npos) {
+      while (pos_ < contents_.size() && contents_[pos_] != '\n') ++pos_;
+    } else {
+      return;
+    }
+  }
+}
+
 std::string_view TextReader::next_token() {
-  skip_blanks_and_comments();
+  if (in_record_) {
+    skip_blanks_on_line();
+    if (pos_ >= contents_.size() || contents_[pos_] == '\n') return {};
+  } else {
+    skip_blanks_and_comments();
+  }
   token_line_ = line_;
   const std::size_t begin = pos_;
   while (pos_ < contents_.size() && !is_space(contents_[pos_]) &&
@@ -50,8 +82,31 @@ std::string_view TextReader::next_token() {
 
 std::string_view TextReader::expect_token(std::string_view what) {
   const std::string_view token = next_token();
-  if (token.empty()) fail("unexpected end of file, expected " + std::string(what));
+  if (token.empty()) {
+    if (in_record_ && pos_ < contents_.size()) fail("line ends before " + std::string(what));
+    fail("unexpected end of file, expected " + std::string(what));
+  }
   return token;
+}
+
+void TextReader::begin_record() {
+  in_record_ = false;
+  skip_blanks_and_comments();
+  token_line_ = line_;
+  in_record_ = true;
+}
+
+bool TextReader::record_has_more() {
+  skip_blanks_on_line();
+  return pos_ < contents_.size() && contents_[pos_] != '\n';
+}
+
+void TextReader::end_record(std::string_view what) {
+  const std::string_view extra = next_token();
+  if (!extra.empty()) {
+    fail("unexpected field " + quoted(extra) + " after " + std::string(what));
+  }
+  in_record_ = false;
 }
 
 std::string_view TextReader::rest_of_line() {
@@ -63,6 +118,7 @@ std::string_view TextReader::rest_of_line() {
 }
 
 bool TextReader::at_end() {
+  if (in_record_) return !record_has_more();
   skip_blanks_and_comments();
   return pos_ >= contents_.size();
 }
@@ -71,9 +127,13 @@ double TextReader::read_double(std::string_view what) {
   std::string_view token = expect_token(what);
   std::string_view digits = token;
   bool negative = false;
-  if (!digits.empty() && (digits.front() == '+' || digits.front() == '-')) {
+  if (!digits.empty() && is_sign(digits.front())) {
     negative = digits.front() == '-';
     digits.remove_prefix(1);
+  }
+  // from_chars accepts a leading '-' itself: a second sign ("--1", "+-1") is malformed.
+  if (!digits.empty() && is_sign(digits.front())) {
+    fail("expected " + std::string(what) + " (a number), got " + quoted(token));
   }
   double value = 0.0;
   std::from_chars_result result{};
@@ -84,13 +144,13 @@ double TextReader::read_double(std::string_view what) {
     result = std::from_chars(digits.data(), digits.data() + digits.size(), value);
   }
   if (result.ec == std::errc::result_out_of_range) {
-    fail(std::string(what) + " '" + std::string(token) + "' is out of the range of a double");
+    fail(std::string(what) + " " + quoted(token) + " is out of the range of a double");
   }
   if (result.ec != std::errc() || result.ptr != digits.data() + digits.size()) {
-    fail("expected " + std::string(what) + " (a number), got '" + std::string(token) + "'");
+    fail("expected " + std::string(what) + " (a number), got " + quoted(token));
   }
   if (!std::isfinite(value)) {
-    fail(std::string(what) + " is not finite ('" + std::string(token) + "')");
+    fail(std::string(what) + " is not finite (" + quoted(token) + ")");
   }
   return negative ? -value : value;
 }
@@ -102,10 +162,10 @@ std::int64_t TextReader::read_integer(std::string_view what, std::int64_t lo, st
   std::int64_t value = 0;
   const auto result = std::from_chars(digits.data(), digits.data() + digits.size(), value);
   if (result.ec == std::errc::result_out_of_range) {
-    fail(std::string(what) + " '" + std::string(token) + "' is out of range");
+    fail(std::string(what) + " " + quoted(token) + " is out of range");
   }
   if (result.ec != std::errc() || result.ptr != digits.data() + digits.size()) {
-    fail("expected " + std::string(what) + " (an integer), got '" + std::string(token) + "'");
+    fail("expected " + std::string(what) + " (an integer), got " + quoted(token));
   }
   if (value < lo || value > hi) {
     fail(std::string(what) + " " + std::to_string(value) + " is outside [" + std::to_string(lo) +
@@ -114,14 +174,19 @@ std::int64_t TextReader::read_integer(std::string_view what, std::int64_t lo, st
   return value;
 }
 
-std::size_t TextReader::read_count(std::string_view what, std::size_t min_bytes_per_record) {
-  const auto count = static_cast<std::size_t>(
-      read_integer(what, 0, std::numeric_limits<std::int64_t>::max()));
+void TextReader::check_count_fits(std::string_view what, std::size_t count,
+                                  std::size_t min_bytes_per_record) const {
   const std::size_t per = min_bytes_per_record == 0 ? 1 : min_bytes_per_record;
   if (count > remaining_bytes() / per) {
     fail(std::string(what) + " " + std::to_string(count) + " cannot fit in the " +
          std::to_string(remaining_bytes()) + " bytes left in the file");
   }
+}
+
+std::size_t TextReader::read_count(std::string_view what, std::size_t min_bytes_per_record) {
+  const auto count = static_cast<std::size_t>(
+      read_integer(what, 0, std::numeric_limits<std::int64_t>::max()));
+  check_count_fits(what, count, min_bytes_per_record);
   return count;
 }
 

@@ -42,6 +42,20 @@ class TextReader {
   /// A count of records that each need at least `min_bytes_per_record` more bytes: refuses
   /// counts the rest of the file cannot hold, so a hostile header never drives an allocation.
   std::size_t read_count(std::string_view what, std::size_t min_bytes_per_record);
+  /// The check read_count does, for a count read before its record size was known.
+  void check_count_fits(std::string_view what, std::size_t count, std::size_t min_bytes_per_record) const;
+
+  /// Line records (Triangle/TetGen files, one record per line): after begin_record(), tokens
+  /// come only from the line where the record starts -- a short line fails as "line ends
+  /// before <what>" instead of silently taking the next line's first field -- and
+  /// end_record() fails when the line holds more fields than the record.
+  void begin_record();
+  void end_record(std::string_view what);
+  /// Inside a record: true when another field follows on the record's line.
+  bool record_has_more();
+
+  /// A token as error messages quote it: at most 40 characters, control bytes as '?'.
+  static std::string quoted(std::string_view token);
 
   /// Line of the last token read (1-based).
   std::size_t line() const { return token_line_; }
@@ -52,6 +66,7 @@ class TextReader {
 
  private:
   void skip_blanks_and_comments();
+  void skip_blanks_on_line();
 
   std::string name_;
   std::string contents_;
@@ -59,6 +74,7 @@ class TextReader {
   std::size_t pos_ = 0;
   std::size_t line_ = 1;        // line of pos_
   std::size_t token_line_ = 1;  // line of the last token returned
+  bool in_record_ = false;      // between begin_record() and end_record()
 };
 
 }  // namespace certimesh::io::detail
