@@ -1,4 +1,35 @@
-// Gmsh .msh version 4.1 ASCII ($MeshFormat, $Entities, $Nodes, $Elements; labels as physical tags of entities).
+// Gmsh .msh version 4.1 ASCII ($MeshFormat, $Entities, $Nodes, $Elements; labels as physical
+// tags of entities).
+//
+// Writing (`4.1 0 8`):
+//  - every (dimension, label) pair of the mesh's cells becomes one entity (curve, surface or
+//    volume) whose only physical tag is the label; label 0 becomes an entity without physical
+//    tags (Gmsh's "no physical group"). Gmsh saves only elements with a physical tag unless
+//    Mesh.SaveAll is set, so label-0 cells survive a Gmsh re-save only with `-save_all`.
+//    Entity tags count from 1 per dimension, in ascending label order; no $PhysicalNames.
+//  - all nodes go in one block on the first entity of the highest dimension, tags 1..N in
+//    point order; 2D points are written with z = 0.
+//  - element tags number the cells 1.. in the order segments, triangles, tetrahedra, each kind
+//    in its MeshData order (so the reader restores that order); types 1, 2, 4.
+//  - point labels (when present) as a `$NodeData` view named "label", one integer per node:
+//    meshio reads it as point_data["label"]; Gmsh loads it as a post-processing view (a Gmsh
+//    re-save of the mesh drops it).
+//
+// Reading:
+//  - $MeshFormat must be `4.1 0 <size>`: binary files (file-type 1) and other versions are
+//    refused. $Entities, $Nodes and $Elements are read; $NodeData named "label" with one
+//    component gives the point labels (nodes it does not list get 0); every other section
+//    ($PhysicalNames, $Periodic, $Comments, other views, ...) is skipped.
+//  - node tags may be any positive integers, in any block order: point i is the node with the
+//    i-th smallest tag. Parametric coordinates are read and dropped.
+//  - element types 1 (line), 2 (triangle), 4 (tetrahedron) become segments, triangles,
+//    tetrahedra, each kind ordered by element tag; type 15 (point) is skipped; any other type
+//    (quadrangles, second-order elements, ...) is refused naming its line.
+//  - an element's label is the first physical tag of its entity, 0 when the entity has none or
+//    the file has no $Entities.
+//  - dimension: 3 when the file has a tetrahedron or a node with z != 0, otherwise 2. A planar
+//    surface mesh in the plane z = 0 written as 3D therefore reads back as 2D (the format does
+//    not say which was meant).
 #pragma once
 
 #include <filesystem>
