@@ -347,13 +347,14 @@ class GmshReader {
     if (has_nodes_) in_.fail("a second $Nodes section");
     has_nodes_ = true;
     const std::size_t blocks = in_.read_count("number of node blocks", 8);
+    const std::size_t header_line = in_.line();
     const std::size_t declared = in_.read_count("number of nodes", 8);
     in_.read_integer("minimum node tag", 0, kMaxTag);
     in_.read_integer("maximum node tag", 0, kMaxTag);
     if (declared > std::numeric_limits<Index>::max()) in_.fail("more than 2^32 - 1 nodes");
     for (std::size_t b = 0; b < blocks; ++b) read_node_block();
     if (nodes_.size() != declared) {
-      in_.fail("the $Nodes header declares " + std::to_string(declared) + " nodes, its blocks hold " +
+      throw FormatError(in_.name(), header_line, "the $Nodes header declares " + std::to_string(declared) + " nodes, its blocks hold " +
                std::to_string(nodes_.size()));
     }
     expect("$EndNodes");
@@ -414,13 +415,14 @@ class GmshReader {
     if (has_elements_) in_.fail("a second $Elements section");
     has_elements_ = true;
     const std::size_t blocks = in_.read_count("number of element blocks", 8);
+    const std::size_t header_line = in_.line();
     const std::size_t declared = in_.read_count("number of elements", 4);
     in_.read_integer("minimum element tag", 0, kMaxTag);
     in_.read_integer("maximum element tag", 0, kMaxTag);
     std::size_t read = 0;
     for (std::size_t b = 0; b < blocks; ++b) read += read_element_block();
     if (read != declared) {
-      in_.fail("the $Elements header declares " + std::to_string(declared) + " elements, its blocks hold " +
+      throw FormatError(in_.name(), header_line, "the $Elements header declares " + std::to_string(declared) + " elements, its blocks hold " +
                std::to_string(read));
     }
     expect("$EndElements");

@@ -590,14 +590,16 @@ class VtuInterpreter {
       if (end < begin || end > static_cast<std::int64_t>(nodes.size())) {
         fail(*offsets, "offset " + std::to_string(end) + " of cell " + std::to_string(c) + " is out of order or beyond the connectivity");
       }
-      append_cell(*types, kinds[c], c, nodes, begin, end, points, mesh);
+      append_cell(*types, *connectivity, kinds[c], c, nodes, {begin, end}, points, mesh);
       begin = end;
     }
   }
 
   // Appends one cell; records its kind in cell_kind_ (3 = skipped vertex) for the labels.
-  void append_cell(const XmlElement& types, std::int64_t type, std::size_t c, const std::vector<std::int64_t>& nodes,
-                   std::int64_t begin, std::int64_t end, std::size_t points, MeshData& mesh) const {
+  void append_cell(const XmlElement& types, const XmlElement& connectivity, std::int64_t type, std::size_t c,
+                   const std::vector<std::int64_t>& nodes, std::pair<std::int64_t, std::int64_t> range, std::size_t points,
+                   MeshData& mesh) const {
+    const auto [begin, end] = range;
     std::size_t kind = 3;
     std::int64_t arity = 1;
     if (type == kVtkLine) { kind = 0; arity = 2; }
@@ -615,7 +617,7 @@ class VtuInterpreter {
     for (std::int64_t i = begin; i < end; ++i) {
       const std::int64_t v = nodes[static_cast<std::size_t>(i)];
       if (v < 0 || static_cast<std::size_t>(v) >= points) {
-        fail(types, "cell " + std::to_string(c) + " names point " + std::to_string(v) + ", outside [0, " + std::to_string(points) + ")");
+        fail(connectivity, "cell " + std::to_string(c) + " names point " + std::to_string(v) + ", outside [0, " + std::to_string(points) + ")");
       }
       cells_of(mesh, kind).push_back(static_cast<Index>(v));
     }
