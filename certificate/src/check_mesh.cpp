@@ -1,16 +1,65 @@
-// PLACEHOLDER while the checker is being written (issue 4): refuses every mesh.
+// The certificate's driver: runs the stages in the order of defect.h and stops at the first
+// defect, so a mesh broken in exactly one way is reported with exactly that reason.
 #include "certimesh/certificate/check_mesh.h"
+
+#include "certimesh/predicates/non_finite_input.h"
+#include "domain_checks.h"
+#include "mesh_hash.h"
+#include "stages.h"
 
 namespace certimesh::certificate {
 
-std::string_view defect_name(Defect) { return "not_implemented"; }
+namespace {
 
-Report check_mesh(const io::MeshData&, const io::MeshData*) {
-  Report report;
-  report.finding.message = "the certificate is not implemented yet";
-  return report;
+detail::MeshView view_of(const io::MeshData& mesh) {
+  detail::MeshView m;
+  m.dim = mesh.dimension == 3 ? 3 : 2;
+  m.xyz = mesh.coordinates.data();
+  m.vertex_count = mesh.coordinates.size() / static_cast<std::size_t>(m.dim);
+  const auto& cells = m.dim == 2 ? mesh.triangles : mesh.tetrahedra;
+  m.cells = cells.data();
+  m.element_count = cells.size() / static_cast<std::size_t>(m.dim + 1);
+  return m;
 }
 
-std::string certificate_json(const Report&, const std::string&) { return "{}"; }
+Finding run_stages(const detail::MeshView& m, const io::MeshData* domain, Statistics& stats) {
+  std::vector<io::Index> lex_order;
+  Finding f = detail::check_input(m, lex_order);
+  if (f.defect != Defect::none) return f;
+  detail::FacetSet boundary;
+  f = detail::pair_facets(m, boundary, stats.interior_facets);
+  stats.boundary_facets = boundary.size();
+  if (f.defect != Defect::none) return f;
+  f = detail::check_orientation(m, stats);
+  if (f.defect != Defect::none) return f;
+  detail::Components comps;
+  f = detail::check_boundary_manifold(m, boundary, comps);
+  stats.boundary_components = comps.facets.size();
+  if (f.defect != Defect::none) return f;
+  f = detail::check_boundary_embedding(m, boundary);
+  if (f.defect != Defect::none) return f;
+  f = detail::check_single_cover(m, boundary, comps);
+  if (f.defect != Defect::none || domain == nullptr) return f;
+  return detail::check_domain(m, boundary, comps, lex_order, *domain, stats);
+}
+
+}  // namespace
+
+Report check_mesh(const io::MeshData& mesh, const io::MeshData* domain) {
+  Report report;
+  const detail::MeshView m = view_of(mesh);
+  report.statistics.dimension = m.dim;
+  report.statistics.vertices = m.vertex_count;
+  report.statistics.elements = m.element_count;
+  report.mesh_sha256 = detail::mesh_sha256(mesh);
+  try {
+    report.finding = run_stages(m, domain, report.statistics);
+  } catch (const predicates::NonFiniteInput& e) {  // only a domain coordinate can get there
+    report.finding = detail::finding(Defect::invalid_domain, -1, -1, -1,
+                                     std::string("a predicate refused the input: ") + e.what());
+  }
+  report.valid = report.finding.defect == Defect::none;
+  return report;
+}
 
 }  // namespace certimesh::certificate

@@ -1,0 +1,57 @@
+// Internal: the broad phase of the intersection checks. A deterministic uniform grid over
+// the boxes; each pair of overlapping boxes is visited exactly once, in the first grid cell
+// both cover, so no set of visited pairs is needed. The cell of a coordinate is a monotone
+// function of it, so two boxes that overlap always share a cell: nothing is missed.
+#pragma once
+
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+#include "mesh_view.h"
+
+namespace certimesh::certificate::detail {
+
+class BoxGrid {
+ public:
+  BoxGrid(const std::vector<Box>& boxes, int dim);
+  /// Calls visit(i, j), i < j, for every pair of overlapping boxes until it returns true.
+  template <class Visit>
+  bool any_pair(Visit visit) const;
+
+ private:
+  int cell(double x, int axis) const {
+    const double t = std::floor((x - lo_[axis]) * scale_[axis]);
+    if (!(t > 0)) return 0;  // also NaN, from an infinite extent
+    return t >= cells_ - 1 ? cells_ - 1 : static_cast<int>(t);
+  }
+  void range(const Box& b, int first[3], int last[3]) const;
+  std::size_t index(const int c[3]) const {
+    return (static_cast<std::size_t>(c[2]) * static_cast<std::size_t>(cells_) + static_cast<std::size_t>(c[1])) *
+               static_cast<std::size_t>(cells_) + static_cast<std::size_t>(c[0]);
+  }
+  const std::vector<Box>& boxes_;
+  int dim_;
+  int cells_ = 1;
+  double lo_[3] = {0, 0, 0}, scale_[3] = {0, 0, 0};
+  std::vector<std::size_t> start_, members_;
+};
+
+template <class Visit>
+bool BoxGrid::any_pair(Visit visit) const {
+  for (std::size_t c = 0; c + 1 < start_.size(); ++c)
+    for (std::size_t a = start_[c]; a < start_[c + 1]; ++a)
+      for (std::size_t b = a + 1; b < start_[c + 1]; ++b) {
+        const std::size_t i = members_[a], j = members_[b];
+        if (!boxes_overlap(boxes_[i], boxes_[j], dim_)) continue;
+        int fi[3], li[3], fj[3], lj[3];
+        range(boxes_[i], fi, li);
+        range(boxes_[j], fj, lj);
+        int first[3] = {0, 0, 0};
+        for (int k = 0; k < dim_; ++k) first[k] = std::max(fi[k], fj[k]);
+        if (index(first) == c && visit(i, j)) return true;
+      }
+  return false;
+}
+
+}  // namespace certimesh::certificate::detail

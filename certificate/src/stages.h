@@ -1,0 +1,49 @@
+// Internal: the checker's stages, in the order of the Defect list (defect.h). Each returns a
+// Finding whose defect is `none` when its conditions hold. proofs/mesh_certificate.md
+// explains why, together, they certify an exact single cover.
+#pragma once
+
+#include <vector>
+
+#include "mesh_view.h"
+
+namespace certimesh::certificate::detail {
+
+/// Condition 1 (no_elements .. repeated_vertex). Fills `lex_order`: the vertices sorted by
+/// coordinates, for exact look-up of a point later.
+Finding check_input(const MeshView& m, std::vector<Index>& lex_order);
+
+/// Condition 2 (duplicate_element, non_manifold_facet, inconsistent_orientation): matches the
+/// facets by a counting sort on their smallest vertex; the unmatched ones become `boundary`.
+Finding pair_facets(const MeshView& m, FacetSet& boundary, std::size_t& interior_facets);
+
+/// Condition 3 (flat_element, inverted_element), exact; also the (approximate) worst quality.
+Finding check_orientation(const MeshView& m, Statistics& stats);
+
+/// Closed boundary components: facets (as indices into the FacetSet), a vertex on them, their
+/// bounding box and the sign of the area / volume they enclose.
+struct Components {
+  std::vector<std::vector<std::size_t>> facets;
+  std::vector<Index> vertex;
+  std::vector<Box> box;
+  std::vector<int> measure_sign;  // +1 outer, -1 cavity
+  std::vector<std::vector<std::size_t>> enclosed_by;  // components with winding != 0 at vertex
+};
+
+/// Condition 4, first half (non_manifold_boundary), and the components.
+Finding check_boundary_manifold(const MeshView& m, const FacetSet& boundary, Components& comps);
+
+/// Condition 4, second half (t_junction, boundary_intersection), exact.
+Finding check_boundary_embedding(const MeshView& m, const FacetSet& boundary);
+
+/// Condition 5 (multiple_cover): winding numbers of the components at each other's vertices.
+Finding check_single_cover(const MeshView& m, const FacetSet& boundary, Components& comps);
+
+/// Exact winding number of component `c` around point `p` (which must be off it).
+int winding_number(const MeshView& m, const FacetSet& boundary, const std::vector<std::size_t>& c,
+                   const double* p);
+
+/// Sign of the area (2D) / volume (3D) enclosed by oriented closed facets: filtered, then exact.
+int enclosed_measure_sign(const MeshView& m, const FacetSet& set, const std::vector<std::size_t>& facets);
+
+}  // namespace certimesh::certificate::detail

@@ -1,0 +1,131 @@
+// Condition 5 and the exact measurements behind it: the sign of the area / volume a boundary
+// component encloses, and winding numbers of components around points off them.
+#include <gmpxx.h>
+
+#include <cfloat>
+#include <cmath>
+#include <limits>
+
+#include "certimesh/predicates/orient2d.h"
+#include "certimesh/predicates/orient3d.h"
+#include "stages.h"
+
+namespace certimesh::certificate::detail {
+namespace {
+
+using predicates::Sign;
+
+// det[a-r, b-r] (2D) or det[a-r, b-r, c-r] (3D) and its permanent (sum of absolute products).
+void facet_term(const MeshView& m, const Index* f, Index r, double& term, double& permanent) {
+  double d[3][3];
+  for (int i = 0; i < m.dim; ++i)
+    for (int k = 0; k < m.dim; ++k) d[i][k] = m.coord(f[i], k) - m.coord(r, k);
+  if (m.dim == 2) {
+    term = d[0][0] * d[1][1] - d[0][1] * d[1][0];
+    permanent = std::abs(d[0][0] * d[1][1]) + std::abs(d[0][1] * d[1][0]);
+    return;
+  }
+  term = d[0][0] * (d[1][1] * d[2][2] - d[1][2] * d[2][1]) - d[0][1] * (d[1][0] * d[2][2] - d[1][2] * d[2][0]) +
+         d[0][2] * (d[1][0] * d[2][1] - d[1][1] * d[2][0]);
+  permanent = std::abs(d[0][0]) * (std::abs(d[1][1] * d[2][2]) + std::abs(d[1][2] * d[2][1])) +
+              std::abs(d[0][1]) * (std::abs(d[1][0] * d[2][2]) + std::abs(d[1][2] * d[2][0])) +
+              std::abs(d[0][2]) * (std::abs(d[1][0] * d[2][1]) + std::abs(d[1][1] * d[2][0]));
+}
+
+mpq_class exact_term(const MeshView& m, const Index* f, Index r) {
+  mpq_class d[3][3];
+  for (int i = 0; i < m.dim; ++i)
+    for (int k = 0; k < m.dim; ++k) d[i][k] = mpq_class(m.coord(f[i], k)) - mpq_class(m.coord(r, k));
+  if (m.dim == 2) return d[0][0] * d[1][1] - d[0][1] * d[1][0];
+  return d[0][0] * (d[1][1] * d[2][2] - d[1][2] * d[2][1]) - d[0][1] * (d[1][0] * d[2][2] - d[1][2] * d[2][0]) +
+         d[0][2] * (d[1][0] * d[2][1] - d[1][1] * d[2][0]);
+}
+
+int winding_2d(const MeshView& m, const FacetSet& b, const std::vector<std::size_t>& c, const double* p) {
+  const predicates::Point2 q{p[0], p[1]};
+  int w = 0;  // half-open crossing rule (upward edges count +1, downward -1), exact
+  for (std::size_t f : c) {
+    const predicates::Point2 a = m.p2(b.facet(f)[0]), e = m.p2(b.facet(f)[1]);
+    if (a.y <= q.y) {
+      if (e.y > q.y && predicates::orient2d(a, e, q) == Sign::positive) ++w;
+    } else if (e.y <= q.y && predicates::orient2d(a, e, q) == Sign::negative) {
+      --w;
+    }
+  }
+  return w;
+}
+
+// Signed crossings of the segment p -> far with the component's triangles. orient3d_sos
+// never answers zero for distinct points, so every crossing is generic; p is off the
+// component, so the infinitesimal perturbation cannot change the winding number.
+int winding_3d(const MeshView& m, const FacetSet& b, const std::vector<std::size_t>& c, const double* p) {
+  double top = -std::numeric_limits<double>::infinity();
+  for (std::size_t f : c)
+    for (int i = 0; i < 3; ++i) top = std::max(top, m.coord(b.facet(f)[i], 0));
+  const predicates::Point3 q{p[0], p[1], p[2]};
+  const predicates::Point3 far{std::nextafter(std::max(top, q.x), std::numeric_limits<double>::infinity()), q.y, q.z};
+  int w = 0;
+  for (std::size_t f : c) {
+    const predicates::Point3 t0 = m.p3(b.facet(f)[0]), t1 = m.p3(b.facet(f)[1]), t2 = m.p3(b.facet(f)[2]);
+    const Sign sq = predicates::orient3d_sos(t0, t1, t2, q);
+    if (sq == predicates::orient3d_sos(t0, t1, t2, far)) continue;
+    const Sign s0 = predicates::orient3d_sos(q, far, t0, t1);
+    if (s0 != predicates::orient3d_sos(q, far, t1, t2) || s0 != predicates::orient3d_sos(q, far, t2, t0)) continue;
+    w += sq == Sign::positive ? 1 : -1;  // q on the inner side: leaving through the facet
+  }
+  return w;
+}
+
+}  // namespace
+
+int enclosed_measure_sign(const MeshView& m, const FacetSet& set, const std::vector<std::size_t>& facets) {
+  const Index r = set.facet(facets[0])[0];
+  double sum = 0, permanents = 0, magnitudes = 0;
+  for (std::size_t f : facets) {
+    double term = 0, permanent = 0;
+    facet_term(m, set.facet(f), r, term, permanent);
+    sum += term, permanents += permanent, magnitudes += std::abs(term);
+  }
+  // Shewchuk's bound for one determinant is below 4ε (2D) / 8ε (3D) times its permanent; the
+  // sum of n terms adds at most 2nε·Σ|term|; the factor 2 covers the rounding of the bound
+  // itself, and the last term covers underflow.
+  const double eps = DBL_EPSILON / 2, n = static_cast<double>(facets.size());
+  const double bound = 2 * ((m.dim == 2 ? 4 : 8) * eps * permanents + 2 * n * eps * magnitudes) +
+                       64 * n * std::numeric_limits<double>::denorm_min();
+  if (std::isfinite(bound) && std::abs(sum) > bound) return sum > 0 ? 1 : -1;
+  mpq_class exact = 0;
+  for (std::size_t f : facets) exact += exact_term(m, set.facet(f), r);
+  return sgn(exact);
+}
+
+int winding_number(const MeshView& m, const FacetSet& b, const std::vector<std::size_t>& c, const double* p) {
+  return m.dim == 2 ? winding_2d(m, b, c, p) : winding_3d(m, b, c, p);
+}
+
+// With every element positive and every interior facet paired, the number of elements over a
+// generic point is the winding number W of the boundary around it, so W >= 0. Next to a
+// component C, W is W_others(v) on one side and W_others(v) + sign(C) on the other (v a vertex
+// of C), and both sides must be 0 or 1.
+Finding check_single_cover(const MeshView& m, const FacetSet& b, Components& comps) {
+  const std::size_t n = comps.facets.size();
+  comps.enclosed_by.assign(n, {});
+  for (std::size_t c = 0; c < n; ++c) {
+    const Index v = comps.vertex[c];
+    int others = 0;
+    for (std::size_t o = 0; o < n; ++o) {
+      if (o == c || !box_contains(comps.box[o], m, v)) continue;
+      const int w = winding_number(m, b, comps.facets[o], m.xyz + static_cast<std::size_t>(v) * m.dim);
+      if (w != 0) comps.enclosed_by[c].push_back(o);
+      others += w;
+    }
+    const int inside = others + comps.measure_sign[c];
+    if (others < 0 || others > 1 || inside < 0 || inside > 1)
+      return finding(Defect::multiple_cover, b.owner[comps.facets[c][0]], -1, v,
+                     "next to the boundary component through vertex " + std::to_string(v) +
+                         " the elements cover the plane/space " + std::to_string(std::max(others, inside)) +
+                         " times (winding numbers " + std::to_string(others) + " and " + std::to_string(inside) + ")");
+  }
+  return {};
+}
+
+}  // namespace certimesh::certificate::detail
