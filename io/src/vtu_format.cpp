@@ -178,10 +178,12 @@ class XmlParser {
     if (end == std::string_view::npos) end = text_.size();
     const std::string_view run = text_.substr(begin, end - begin);
     advance(end - pos_);
-    if (std::all_of(run.begin(), run.end(), is_xml_space)) return;
+    const auto first = std::find_if_not(run.begin(), run.end(), is_xml_space);
+    if (first == run.end()) return;
     if (!element.text.empty()) fail("<" + element.name + "> has character data in several pieces");
-    element.text = run;
-    element.text_line = line;
+    // The text and its line start at its first non-blank character (errors name that line).
+    element.text = run.substr(static_cast<std::size_t>(first - run.begin()));
+    element.text_line = line + static_cast<std::size_t>(std::count(run.begin(), first, '\n'));
   }
 
   const std::string& name_;
