@@ -154,7 +154,7 @@ void append_entities(std::string& out, const MeshData& mesh, const std::vector<E
   for (const Entity& e : entities) {
     out += std::to_string(e.tag) + ' ';
     append_bounding_box(out, mesh, points_of_entity(mesh, e));
-    out += e.label == 0 ? "0 " : "1 " + std::to_string(e.label) + ' ';
+    out += "1 " + std::to_string(e.label) + ' ';  // label 0 too: see gmsh_format.h
     out += "0\n";
   }
   out += "$EndEntities\n";
@@ -353,7 +353,9 @@ class GmshReader {
     in_.read_integer("maximum node tag", 0, kMaxTag);
     if (declared > std::numeric_limits<Index>::max()) in_.fail("more than 2^32 - 1 nodes");
     for (std::size_t b = 0; b < blocks; ++b) read_node_block();
-    if (nodes_.size() != declared) {
+    // Gmsh 4.8 counts, in the header, the nodes of entities it then does not save (Mesh.SaveAll
+    // = 0), so only blocks holding more nodes than declared are refused.
+    if (nodes_.size() > declared) {
       throw FormatError(in_.name(), header_line, "the $Nodes header declares " + std::to_string(declared) + " nodes, its blocks hold " +
                std::to_string(nodes_.size()));
     }

@@ -3,10 +3,12 @@
 //
 // Writing (`4.1 0 8`):
 //  - every (dimension, label) pair of the mesh's cells becomes one entity (curve, surface or
-//    volume) whose only physical tag is the label; label 0 becomes an entity without physical
-//    tags (Gmsh's "no physical group"). Gmsh saves only elements with a physical tag unless
-//    Mesh.SaveAll is set, so label-0 cells survive a Gmsh re-save only with `-save_all`.
-//    Entity tags count from 1 per dimension, in ascending label order; no $PhysicalNames.
+//    volume) whose only physical tag is the label, label 0 included (physical tag 0). Why 0 is
+//    written rather than left out: Gmsh saves only elements of physical groups (unless
+//    Mesh.SaveAll), and meshio 5.0 fails on files that mix entities with and without physical
+//    tags; with a tag on every entity, Gmsh keeps every element and meshio gives one
+//    cell_data["gmsh:physical"] value per cell. Entity tags count from 1 per dimension, in
+//    ascending label order; no $PhysicalNames.
 //  - all nodes go in one block on the first entity of the highest dimension, tags 1..N in
 //    point order; 2D points are written with z = 0.
 //  - element tags number the cells 1.. in the order segments, triangles, tetrahedra, each kind
@@ -19,7 +21,9 @@
 //  - $MeshFormat must be `4.1 0 <size>`: binary files (file-type 1) and other versions are
 //    refused. $Entities, $Nodes and $Elements are read; $NodeData named "label" with one
 //    component gives the point labels (nodes it does not list get 0); every other section
-//    ($PhysicalNames, $Periodic, $Comments, other views, ...) is skipped.
+//    ($PhysicalNames, $Periodic, $Comments, other views, ...) is skipped. The $Nodes header may
+//    declare more nodes than its blocks hold (Gmsh 4.8 does so when it leaves out entities that
+//    have no physical group), not fewer.
 //  - node tags may be any positive integers, in any block order: point i is the node with the
 //    i-th smallest tag. Parametric coordinates are read and dropped.
 //  - element types 1 (line), 2 (triangle), 4 (tetrahedron) become segments, triangles,
