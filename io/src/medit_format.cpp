@@ -87,15 +87,16 @@ struct MeditParser {
 
   // A keyword certimesh does not hold: its count, then one record per line.
   void skip_section(std::string_view keyword) {
-    const std::size_t count = in.read_count(std::string(keyword) + " count", 2);
+    const std::string name = TextReader::quoted(keyword);  // the keyword may be any length
+    const std::size_t count = in.read_count(name + " count", 2);
     in.rest_of_line();
     for (std::size_t r = 0; r < count; ++r) {
       in.begin_record();
       if (!in.record_has_more()) {
-        in.fail("unexpected end of file in the " + std::string(keyword) + " section");
+        in.fail("unexpected end of file in the " + name + " section");
       }
       while (in.record_has_more()) in.next_token();
-      in.end_record(keyword);
+      in.end_record(name);
     }
   }
 

@@ -86,7 +86,9 @@ Label read_attribute_label(TextReader& in) {
   const double value = in.read_double("regional attribute");
   if (std::trunc(value) != value || value < std::numeric_limits<Label>::min() ||
       value > std::numeric_limits<Label>::max()) {
-    in.fail("regional attribute " + TextReader::quoted(std::to_string(value)) +
+    std::string shown;
+    append_double(shown, value);
+    in.fail("regional attribute " + shown +
             " is not an integer label (certimesh keeps the first attribute as the element's "
             "label)");
   }
