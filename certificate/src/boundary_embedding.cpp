@@ -5,6 +5,8 @@
 #include <array>
 
 #include "certimesh/predicates/intersection/segment_segment_2d.h"
+#include "certimesh/predicates/orient2d.h"
+#include "certimesh/predicates/orient3d.h"
 #include "certimesh/predicates/intersection/triangle_segment_3d.h"
 #include "certimesh/predicates/intersection/triangle_triangle_3d.h"
 #include "close_pairs.h"
@@ -16,15 +18,87 @@ namespace certimesh::certificate::detail {
 using predicates::IntersectionMode;
 using predicates::Overlap;
 
-bool facets_meet(const MeshView& m, const Index* f, const Index* g) {
-  if (m.dim == 2) {
-    const std::array<predicates::Vertex2, 2> s{{{m.p2(f[0]), f[0]}, {m.p2(f[1]), f[1]}}};
-    const std::array<predicates::Vertex2, 2> t{{{m.p2(g[0]), g[0]}, {m.p2(g[1]), g[1]}}};
-    return predicates::segment_segment_2d(s, t, IntersectionMode::exact) == Overlap::intersect;
+namespace {
+
+std::array<predicates::Vertex3, 3> triangle(const MeshView& m, Index a, Index b, Index c) {
+  return {{{m.p3(a), a}, {m.p3(b), b}, {m.p3(c), c}}};
+}
+
+bool segment_meets_triangle(const MeshView& m, Index a, Index b, const std::array<predicates::Vertex3, 3>& t) {
+  const std::array<predicates::Vertex3, 2> s{{{m.p3(a), a}, {m.p3(b), b}}};
+  return predicates::triangle_segment_3d(t, s, IntersectionMode::exact) == Overlap::intersect;
+}
+
+// Triangles (a,b,c) and (a,b,d) sharing edge ab meet beyond it iff they are coplanar and c, d
+// lie on the same side of ab; the side is read in a coordinate projection where abc is not
+// degenerate (facets of positive elements never are).
+bool edge_neighbours_overlap(const MeshView& m, Index a, Index b, Index c, Index d) {
+  if (predicates::orient3d(m.p3(a), m.p3(b), m.p3(c), m.p3(d)) != predicates::Sign::zero) return false;
+  for (int drop = 0; drop < 3; ++drop) {
+    auto p = [&](Index v) {
+      const int u = drop == 0 ? 1 : 0, w = drop == 2 ? 1 : 2;
+      return predicates::Point2{m.coord(v, u), m.coord(v, w)};
+    };
+    const predicates::Sign sc = predicates::orient2d(p(a), p(b), p(c));
+    if (sc != predicates::Sign::zero) return predicates::orient2d(p(a), p(b), p(d)) == sc;
   }
-  const std::array<predicates::Vertex3, 3> s{{{m.p3(f[0]), f[0]}, {m.p3(f[1]), f[1]}, {m.p3(f[2]), f[2]}}};
-  const std::array<predicates::Vertex3, 3> t{{{m.p3(g[0]), g[0]}, {m.p3(g[1]), g[1]}, {m.p3(g[2]), g[2]}}};
-  return predicates::triangle_triangle_3d(s, t, IntersectionMode::exact) == Overlap::intersect;
+  return true;  // unreachable for a non-degenerate triangle
+}
+
+// A fast certificate that triangles f and g meet at most in their shared vertices: in some
+// coordinate projection, the line through an edge pq of one triangle has its third vertex
+// strictly on one side and every vertex of the other triangle that is not p or q strictly on
+// the other (certain filter signs only). The projections then meet only in shared vertices on
+// that line, and the first triangle projects injectively (its third vertex is off the line),
+// so the triangles meet only in shared vertices. Two convex polygons that touch at most in a
+// common vertex or edge are separated by a line through an edge of one of them, so this
+// usually succeeds; when it does not, the exact rules below decide.
+bool separated_in_projection(const MeshView& m, const Index* f, const Index* g) {
+  using predicates::FilteredSign;
+  for (int drop = 0; drop < 3; ++drop) {
+    const int u = drop == 0 ? 1 : 0, w = drop == 2 ? 1 : 2;
+    auto p = [&](Index v) { return predicates::Point2{m.coord(v, u), m.coord(v, w)}; };
+    for (int pass = 0; pass < 2; ++pass, std::swap(f, g))
+      for (int i = 0; i < 3; ++i) {
+        const Index a = f[i], b = f[(i + 1) % 3];
+        const FilteredSign inner = predicates::orient2d_filtered(p(a), p(b), p(f[(i + 2) % 3]));
+        bool apart = inner != FilteredSign::uncertain;
+        for (int j = 0; j < 3 && apart; ++j)
+          apart = g[j] == a || g[j] == b || predicates::orient2d_filtered(p(a), p(b), p(g[j])) == -inner;
+        if (apart) return true;
+      }
+  }
+  return false;
+}
+
+// The exact rules of condition 4 by the number of shared vertices (proofs/mesh_certificate.md).
+bool triangles_meet(const MeshView& m, const Index* f, const Index* g) {
+  int shared = 0, fi[3], gi[3];
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j)
+      if (f[i] == g[j]) fi[shared] = i, gi[shared] = j, ++shared;
+  if (shared == 3) return true;  // the same triangle twice: impossible after facet pairing
+  if (separated_in_projection(m, f, g)) return false;
+  if (shared == 2) {
+    const int c = 3 - fi[0] - fi[1], d = 3 - gi[0] - gi[1];
+    return edge_neighbours_overlap(m, f[fi[0]], f[fi[1]], f[c], g[d]);
+  }
+  if (shared == 1) {  // (a,b,c), (a,d,e): bc against ade, de against abc
+    const Index b = f[(fi[0] + 1) % 3], c = f[(fi[0] + 2) % 3], d = g[(gi[0] + 1) % 3], e = g[(gi[0] + 2) % 3];
+    return segment_meets_triangle(m, b, c, triangle(m, g[0], g[1], g[2])) ||
+           segment_meets_triangle(m, d, e, triangle(m, f[0], f[1], f[2]));
+  }
+  return predicates::triangle_triangle_3d(triangle(m, f[0], f[1], f[2]), triangle(m, g[0], g[1], g[2]),
+                                          IntersectionMode::exact) == Overlap::intersect;
+}
+
+}  // namespace
+
+bool facets_meet(const MeshView& m, const Index* f, const Index* g) {
+  if (m.dim == 3) return triangles_meet(m, f, g);
+  const std::array<predicates::Vertex2, 2> s{{{m.p2(f[0]), f[0]}, {m.p2(f[1]), f[1]}}};
+  const std::array<predicates::Vertex2, 2> t{{{m.p2(g[0]), g[0]}, {m.p2(g[1]), g[1]}}};
+  return predicates::segment_segment_2d(s, t, IntersectionMode::exact) == Overlap::intersect;
 }
 
 // Whether vertex v (not a vertex of f) lies on the closed facet f: a degenerate segment v-v.
