@@ -1,0 +1,109 @@
+// libFuzzer target for the text readers (Medit .mesh; Triangle/TetGen .node .ele .face .edge
+// .poly). Input layout: the first byte picks the reader; the rest is the file, optionally
+// followed by "\n====\n" and the contents of its companion X.node. For every input:
+//   - the reader either throws FormatError or returns a MeshData whose indices name existing
+//     points, whose label lists are empty or one per item, and whose numbers are finite;
+//   - any other exception, crash, leak or sanitizer report is a finding (libFuzzer stops);
+//   - an accepted mesh without holes/regions survives Medit: format_medit then
+//     parse_medit_format gives the same MeshData bit for bit (a differential check between the
+//     two readers and the writer).
+#include <bit>
+#include <cmath>
+#include <cstdint>
+#include <cstdio>
+#include <cstdlib>
+#include <optional>
+#include <string>
+#include <string_view>
+
+#include "certimesh/io/format_error.h"
+#include "certimesh/io/medit_format.h"
+#include "certimesh/io/triangle_format.h"
+
+namespace {
+
+namespace io = certimesh::io;
+
+[[noreturn]] void fail(const char* what) {
+  std::fprintf(stderr, "\n*** readers_fuzz: %s\n", what);
+  std::abort();
+}
+
+void check_cells(const std::vector<io::Index>& cells, const std::vector<io::Label>& labels,
+                 std::size_t corners, std::size_t points) {
+  if (cells.size() % corners != 0) fail("cell array is not a multiple of its corner count");
+  if (!labels.empty() && labels.size() != cells.size() / corners) fail("label count mismatch");
+  for (const io::Index i : cells) {
+    if (i >= points) fail("index out of range accepted");
+  }
+}
+
+void check_finite(const std::vector<double>& values) {
+  for (const double v : values) {
+    if (!std::isfinite(v)) fail("non-finite number accepted");
+  }
+}
+
+void check_well_formed(const io::MeshData& m) {
+  if (m.dimension != 2 && m.dimension != 3) fail("dimension not 2 or 3");
+  const auto dim = static_cast<std::size_t>(m.dimension);
+  if (m.coordinates.size() % dim != 0) fail("coordinates not a multiple of the dimension");
+  check_finite(m.coordinates);
+  check_finite(m.holes);
+  check_finite(m.region_points);
+  check_finite(m.region_attributes);
+  const std::size_t n = m.point_count();
+  if (!m.point_labels.empty() && m.point_labels.size() != n) fail("point label count mismatch");
+  check_cells(m.segments, m.segment_labels, 2, n);
+  check_cells(m.triangles, m.triangle_labels, 3, n);
+  check_cells(m.tetrahedra, m.tetrahedron_labels, 4, n);
+}
+
+bool same_bits(const std::vector<double>& a, const std::vector<double>& b) {
+  if (a.size() != b.size()) return false;
+  for (std::size_t i = 0; i < a.size(); ++i) {
+    if (std::bit_cast<std::uint64_t>(a[i]) != std::bit_cast<std::uint64_t>(b[i])) return false;
+  }
+  return true;
+}
+
+void check_medit_round_trip(const io::MeshData& m) {
+  if (!m.holes.empty() || !m.region_points.empty()) return;  // .mesh cannot hold them
+  const io::MeshData back = io::parse_medit_format("round-trip.mesh", io::format_medit(m));
+  if (!(back == m) || !same_bits(back.coordinates, m.coordinates)) {
+    fail("format_medit -> parse_medit_format changed the mesh");
+  }
+}
+
+constexpr const char* kNames[] = {"f.mesh", "f.node", "f.ele", "f.face", "f.edge", "f.poly"};
+
+io::MeshData parse(std::size_t reader, std::string main, std::optional<std::string> node) {
+  if (reader == 0) return io::parse_medit_format(kNames[0], std::move(main));
+  return io::parse_triangle_format(kNames[reader], std::move(main),
+                                   [&](const std::filesystem::path& p) -> std::optional<std::string> {
+                                     if (p.extension() == ".node") return node;
+                                     return std::nullopt;
+                                   });
+}
+
+}  // namespace
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+  if (size == 0) return 0;
+  const std::size_t reader = data[0] % 6;
+  const std::string_view rest(reinterpret_cast<const char*>(data + 1), size - 1);
+  constexpr std::string_view kSeparator = "\n====\n";
+  const std::size_t split = rest.find(kSeparator);
+  std::string main(rest.substr(0, split));
+  std::optional<std::string> node;
+  if (split != std::string_view::npos) node = std::string(rest.substr(split + kSeparator.size()));
+  io::MeshData mesh;
+  try {
+    mesh = parse(reader, std::move(main), std::move(node));
+  } catch (const io::FormatError&) {
+    return 0;  // refusing is a correct answer; what matters is that nothing else happens
+  }
+  check_well_formed(mesh);
+  check_medit_round_trip(mesh);
+  return 0;
+}
