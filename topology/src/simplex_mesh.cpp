@@ -163,7 +163,7 @@ int SimplexMesh<E, S>::mirror_facet(ElementId e, int i) const {
 }
 
 template <int E, int S>
-void SimplexMesh<E, S>::check_new_element(const Element& vertices) const {
+void SimplexMesh<E, S>::check_new_vertices(const Element& vertices) const {
   for (std::size_t a = 0; a < vertices.size(); ++a) {
     if (!is_live(vertices[a]))
       throw TopologyError("add_element: vertex " + id_text(vertices[a].value) + " (local " +
@@ -174,18 +174,14 @@ void SimplexMesh<E, S>::check_new_element(const Element& vertices) const {
                             " is repeated (local " + std::to_string(b) + " and " +
                             std::to_string(a) + ")");
   }
-  // A facet already shared by two elements cannot take a third (non-manifold).
-  for (int i = 0; i <= S; ++i) {
-    Facet f{};
-    const auto local = local_facet<S>(i);
-    for (std::size_t k = 0; k < f.size(); ++k) f[k] = vertices[static_cast<std::size_t>(local[k])];
-    const FacetHolder* holder = find_holder(key_of(f));
-    if (holder != nullptr && neighbour(holder->element, holder->local) != no_element)
-      throw TopologyError("add_element: facet opposite local vertex " + std::to_string(i) +
-                          " is already shared by elements " + id_text(holder->element.value) +
-                          " and " + id_text(neighbour(holder->element, holder->local).value) +
-                          " (non-manifold)");
-  }
+}
+
+template <int E, int S>
+typename SimplexMesh<E, S>::Key SimplexMesh<E, S>::facet_key(const Element& vertices, int i) noexcept {
+  const auto local = local_facet<S>(i);
+  Key key{};
+  for (std::size_t k = 0; k < key.size(); ++k) key[k] = vertices[static_cast<std::size_t>(local[k])].value;
+  return sorted_key<S>(key);
 }
 
 template <int E, int S>
@@ -204,38 +200,62 @@ ElementId SimplexMesh<E, S>::take_element_slot() {
 }
 
 template <int E, int S>
-const typename SimplexMesh<E, S>::FacetHolder* SimplexMesh<E, S>::find_holder(const Key& key) const {
+void SimplexMesh<E, S>::count_probes(const Key& key) const noexcept {
   ++stats_.lookups;
-  const std::size_t bucket = facets_.bucket(key);
-  stats_.probes += facets_.bucket_size(bucket);
+  stats_.probes += facets_.bucket_size(facets_.bucket(key));
+}
+
+template <int E, int S>
+typename SimplexMesh<E, S>::FacetHolder* SimplexMesh<E, S>::find_holder(const Key& key) {
+  count_probes(key);
   const auto it = facets_.find(key);
   return it == facets_.end() ? nullptr : &it->second;
 }
 
 template <int E, int S>
-void SimplexMesh<E, S>::link_facet(ElementId e, int i) {
-  const Key key = key_of(facet(e, i));
-  const FacetHolder* holder = find_holder(key);
-  const std::size_t slot = static_cast<std::size_t>(e.value) * (S + 1) + static_cast<std::size_t>(i);
-  if (holder == nullptr) {
-    facets_.emplace(key, FacetHolder{e, i});
-    neighbours_[slot] = no_element;
-    return;
-  }
-  neighbours_[slot] = holder->element;
-  neighbours_[static_cast<std::size_t>(holder->element.value) * (S + 1) +
-              static_cast<std::size_t>(holder->local)] = e;
+const typename SimplexMesh<E, S>::FacetHolder* SimplexMesh<E, S>::find_holder(const Key& key) const {
+  count_probes(key);
+  const auto it = facets_.find(key);
+  return it == facets_.end() ? nullptr : &it->second;
+}
+
+template <int E, int S>
+ElementId& SimplexMesh<E, S>::neighbour_slot(ElementId e, int i) noexcept {
+  return neighbours_[static_cast<std::size_t>(e.value) * (S + 1) + static_cast<std::size_t>(i)];
 }
 
 template <int E, int S>
 ElementId SimplexMesh<E, S>::add_element(const Element& vertices, Label label) {
-  check_new_element(vertices);
+  check_new_vertices(vertices);
+  // One lookup per facet: find every twin first (a facet held twice refuses a third element
+  // before anything changes), then link. Pointers to mapped values survive rehashing.
+  std::array<Key, S + 1> keys{};
+  std::array<FacetHolder*, S + 1> twins{};
+  for (int i = 0; i <= S; ++i) {
+    const auto ui = static_cast<std::size_t>(i);
+    keys[ui] = facet_key(vertices, i);
+    twins[ui] = find_holder(keys[ui]);
+    if (twins[ui] != nullptr && neighbour_slot(twins[ui]->element, twins[ui]->local) != no_element)
+      throw TopologyError("add_element: facet opposite local vertex " + std::to_string(i) +
+                          " is already shared by elements " + id_text(twins[ui]->element.value) +
+                          " and " + id_text(neighbour_slot(twins[ui]->element, twins[ui]->local).value) +
+                          " (non-manifold)");
+  }
   const ElementId e = take_element_slot();
   element_live_[e.value] = 1;
   element_labels_[e.value] = label;
   std::copy(vertices.begin(), vertices.end(),
             element_vertices_.begin() + static_cast<std::ptrdiff_t>(e.value) * (S + 1));
-  for (int i = 0; i <= S; ++i) link_facet(e, i);
+  for (int i = 0; i <= S; ++i) {
+    FacetHolder* twin = twins[static_cast<std::size_t>(i)];
+    if (twin == nullptr) {
+      facets_.emplace(keys[static_cast<std::size_t>(i)], FacetHolder{e, i});
+      neighbour_slot(e, i) = no_element;
+    } else {
+      neighbour_slot(e, i) = twin->element;
+      neighbour_slot(twin->element, twin->local) = e;
+    }
+  }
   for (const VertexId v : vertices) {
     ++vertex_degree_[v.value];
     vertex_hint_[v.value] = e;
@@ -245,20 +265,23 @@ ElementId SimplexMesh<E, S>::add_element(const Element& vertices, Label label) {
 }
 
 template <int E, int S>
-void SimplexMesh<E, S>::unlink_facet(ElementId e, int i) {
-  const std::size_t slot = static_cast<std::size_t>(e.value) * (S + 1) + static_cast<std::size_t>(i);
-  const ElementId n = neighbours_[slot];
-  const Key key = key_of(facet(e, i));
-  ++stats_.lookups;
-  stats_.probes += facets_.bucket_size(facets_.bucket(key));
+void SimplexMesh<E, S>::unlink_facet(ElementId e, const Element& vertices, int i) {
+  const Key key = facet_key(vertices, i);
+  count_probes(key);
+  const auto it = facets_.find(key);
+  const ElementId n = neighbour_slot(e, i);
   if (n == no_element) {
-    facets_.erase(key);
+    facets_.erase(it);
     return;
   }
-  const int j = mirror_facet(e, i);
-  neighbours_[static_cast<std::size_t>(n.value) * (S + 1) + static_cast<std::size_t>(j)] = no_element;
-  neighbours_[slot] = no_element;
-  facets_.find(key)->second = FacetHolder{n, j};
+  // The twin's local index: its only vertex not on the shared facet.
+  int j = 0;
+  while (std::binary_search(key.begin(), key.end(),
+                            element_vertices_[static_cast<std::size_t>(n.value) * (S + 1) + static_cast<std::size_t>(j)].value))
+    ++j;
+  neighbour_slot(n, j) = no_element;
+  neighbour_slot(e, i) = no_element;
+  it->second = FacetHolder{n, j};
 }
 
 template <int E, int S>
@@ -285,7 +308,7 @@ void SimplexMesh<E, S>::remove_element(ElementId e) {
   const Element vs = vertices(e);
   // Hints first, while the removed element still knows its neighbours.
   for (const VertexId v : vs) refresh_hint_after_removal(e, v);
-  for (int i = 0; i <= S; ++i) unlink_facet(e, i);
+  for (int i = 0; i <= S; ++i) unlink_facet(e, vs, i);
   element_live_[e.value] = 0;
   free_elements_.push_back(e);
   --live_elements_;

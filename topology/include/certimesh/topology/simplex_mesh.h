@@ -129,11 +129,14 @@ class SimplexMesh {
 
   void check_live(VertexId v) const;
   void check_live(ElementId e) const;
-  void check_new_element(const Element& vertices) const;
+  void check_new_vertices(const Element& vertices) const;
+  static Key facet_key(const Element& vertices, int i) noexcept;
   ElementId take_element_slot();
+  void count_probes(const Key& key) const noexcept;
+  FacetHolder* find_holder(const Key& key);
   const FacetHolder* find_holder(const Key& key) const;
-  void link_facet(ElementId e, int i);
-  void unlink_facet(ElementId e, int i);
+  ElementId& neighbour_slot(ElementId e, int i) noexcept;
+  void unlink_facet(ElementId e, const Element& vertices, int i);
   void refresh_hint_after_removal(ElementId removed, VertexId v);
   int local_vertex(ElementId e, VertexId v) const noexcept;
 
