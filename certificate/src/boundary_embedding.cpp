@@ -11,7 +11,6 @@
 #include "certimesh/predicates/intersection/triangle_triangle_3d.h"
 #include "close_pairs.h"
 #include "stages.h"
-#include "facet_contact.h"
 
 namespace certimesh::certificate::detail {
 
@@ -92,8 +91,6 @@ bool triangles_meet(const MeshView& m, const Index* f, const Index* g) {
                                           IntersectionMode::exact) == Overlap::intersect;
 }
 
-}  // namespace
-
 bool facets_meet(const MeshView& m, const Index* f, const Index* g) {
   if (m.dim == 3) return triangles_meet(m, f, g);
   const std::array<predicates::Vertex2, 2> s{{{m.p2(f[0]), f[0]}, {m.p2(f[1]), f[1]}}};
@@ -125,6 +122,8 @@ std::int64_t t_junction_vertex(const MeshView& m, const Index* f, const Index* g
       if (!has(g, f[i]) && vertex_on_facet(m, f[i], g)) return f[i];
   return -1;
 }
+
+}  // namespace
 
 Finding first_contact(const MeshView& m, const FacetSet& set, Defect touching, Defect crossing,
                       const std::string& what) {

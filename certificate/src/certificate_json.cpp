@@ -10,8 +10,7 @@
 #include <memory>
 
 #include "certimesh/io/mesh_file.h"
-#include "mesh_hash.h"
-#include "mesh_view.h"
+#include "stages.h"
 
 namespace certimesh::certificate {
 namespace detail {

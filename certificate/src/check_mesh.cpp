@@ -3,8 +3,6 @@
 #include "certimesh/certificate/check_mesh.h"
 
 #include "certimesh/predicates/non_finite_input.h"
-#include "domain_checks.h"
-#include "mesh_hash.h"
 #include "stages.h"
 
 namespace certimesh::certificate {

@@ -1,5 +1,308 @@
-#include "domain_checks.h"
+// Condition 6: the mesh tiles exactly its domain. Points on domain segments / faces follow
+// design decision 2: a mesh vertex is on a domain facet when the facet meets the vertex's
+// rounding box (the reals that round to it), decided exactly in rationals.
+#include <gmpxx.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <limits>
+#include <numeric>
+
+#include "certimesh/predicates/orient2d.h"
+#include "close_pairs.h"
+#include "stages.h"
+
 namespace certimesh::certificate::detail {
-Finding check_domain(const MeshView&, const FacetSet&, const Components&, const std::vector<Index>&,
-                     const io::MeshData&, Statistics&) { return {}; }
+namespace {
+
+using Q = mpq_class;
+using Vec = std::array<Q, 3>;
+
+struct Domain {
+  MeshView geo;     // coordinates only
+  FacetSet facets;  // segments (2D) or triangles (3D), domain vertex ids
+};
+
+// Half-way to the next double towards `toward`: the rounding box ends there.
+Q half_way(double x, double toward) {
+  const double y = std::nextafter(x, toward);
+  return std::isfinite(y) ? (Q(x) + Q(y)) / 2 : Q(x);
 }
+
+Vec minus(const Vec& a, const Vec& b) { return {a[0] - b[0], a[1] - b[1], a[2] - b[2]}; }
+Vec cross(const Vec& a, const Vec& b) {
+  return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
+}
+
+// Whether the simplex `pts` (2 or 3 points) meets the box around p: its rounding box, or p
+// itself when `point_only`. Separating axis theorem, exact: the box's axes, the simplex's
+// normal (2D segment, 3D triangle) and the edge x axis cross products (3D). A degenerate box
+// is the limit of boxes, so the same axes decide the point case.
+bool meets_box(const std::vector<Vec>& pts, int dim, const double* p, bool point_only) {
+  Vec lo{0, 0, 0}, hi{0, 0, 0};
+  const double inf = std::numeric_limits<double>::infinity();
+  for (int k = 0; k < dim; ++k) lo[k] = point_only ? Q(p[k]) : half_way(p[k], -inf), hi[k] = point_only ? Q(p[k]) : half_way(p[k], inf);
+  std::vector<Vec> axes;
+  for (int k = 0; k < dim; ++k) axes.push_back(Vec{Q(k == 0), Q(k == 1), Q(k == 2)});
+  std::vector<Vec> edges;
+  for (std::size_t i = 0; i + 1 < pts.size() + (pts.size() == 3); ++i)
+    edges.push_back(minus(pts[(i + 1) % pts.size()], pts[i]));
+  if (dim == 2) axes.push_back(Vec{-edges[0][1], edges[0][0], 0});
+  if (dim == 3 && pts.size() == 3) axes.push_back(cross(edges[0], edges[1]));
+  for (std::size_t e = 0; dim == 3 && e < edges.size(); ++e)
+    for (int k = 0; k < 3; ++k) axes.push_back(cross(edges[e], axes[static_cast<std::size_t>(k)]));
+  for (const Vec& a : axes) {
+    Q fmin = a[0] * pts[0][0] + a[1] * pts[0][1] + a[2] * pts[0][2], fmax = fmin, bmin = 0, bmax = 0;
+    for (const Vec& q : pts) {
+      const Q x = a[0] * q[0] + a[1] * q[1] + a[2] * q[2];
+      fmin = std::min(fmin, x), fmax = std::max(fmax, x);
+    }
+    for (int k = 0; k < dim; ++k) bmin += a[k] * (a[k] > 0 ? lo[k] : hi[k]), bmax += a[k] * (a[k] > 0 ? hi[k] : lo[k]);
+    if (fmax < bmin || bmax < fmin) return false;
+  }
+  return true;
+}
+
+std::vector<Vec> points_of(const MeshView& g, std::initializer_list<Index> ids) {
+  std::vector<Vec> out;
+  for (Index v : ids) out.push_back(Vec{g.coord(v, 0), g.coord(v, 1), g.dim == 3 ? Q(g.coord(v, 2)) : Q(0)});
+  return out;
+}
+std::vector<Vec> facet_points(const Domain& d, std::size_t f) {
+  const Index* x = d.facets.facet(f);
+  return d.geo.dim == 2 ? points_of(d.geo, {x[0], x[1]}) : points_of(d.geo, {x[0], x[1], x[2]});
+}
+
+Finding invalid(const std::string& why, std::int64_t facet = -1) {
+  return finding(Defect::invalid_domain, -1, facet, -1, "the domain " + why);
+}
+
+Finding load_domain(const io::MeshData& data, int dim, Domain& d) {
+  if (data.dimension != dim) return invalid("has dimension " + std::to_string(data.dimension) + ", the mesh " + std::to_string(dim));
+  d.geo = MeshView{dim, data.coordinates.data(), data.point_count(), nullptr, 0};
+  d.facets = FacetSet{dim, dim == 2 ? data.segments : data.triangles, {}};
+  d.facets.owner.resize(d.facets.vertices.size() / static_cast<std::size_t>(dim));
+  std::iota(d.facets.owner.begin(), d.facets.owner.end(), 0);
+  if (d.facets.size() == 0) return invalid(dim == 2 ? "has no segments" : "has no triangles");
+  for (double x : data.coordinates) if (!std::isfinite(x)) return invalid("has a NaN or infinite coordinate");
+  for (double x : data.holes) if (!std::isfinite(x)) return invalid("has a NaN or infinite hole point");
+  for (std::size_t f = 0; f < d.facets.size(); ++f) {
+    const Index* x = d.facets.facet(f);
+    for (int i = 0; i < dim; ++i) if (x[i] >= d.geo.vertex_count) return invalid("facet " + std::to_string(f) + " names a missing vertex", static_cast<std::int64_t>(f));
+    const std::vector<Vec> p = facet_points(d, f);
+    const bool flat = dim == 2 ? p[0] == p[1] : cross(minus(p[1], p[0]), minus(p[2], p[0])) == Vec{0, 0, 0};
+    if (flat) return invalid("facet " + std::to_string(f) + " is degenerate", static_cast<std::int64_t>(f));
+  }
+  Finding c = first_contact(d.geo, d.facets, Defect::invalid_domain, Defect::invalid_domain, "domain facet");
+  if (c.defect != Defect::none) c.message = "the domain is not simple: " + c.message;
+  return c;
+}
+
+struct OnFacet {
+  Index vertex;
+  std::uint32_t facet;
+  bool exact;
+  friend bool operator<(const OnFacet& a, const OnFacet& b) { return a.vertex != b.vertex ? a.vertex < b.vertex : a.facet < b.facet; }
+};
+
+// Every (boundary vertex, domain facet) incidence by the rounding-box rule. A point outside a
+// facet's double bounding box has its rounding box outside too, so the grid's box test loses
+// nothing.
+std::vector<OnFacet> incidences(const MeshView& m, const std::vector<Index>& verts, const Domain& d) {
+  std::vector<Box> boxes;
+  for (std::size_t f = 0; f < d.facets.size(); ++f) boxes.push_back(facet_box(d.geo, d.facets.facet(f), d.geo.dim));
+  for (Index v : verts) boxes.push_back(facet_box(m, &v, 1));
+  std::vector<OnFacet> out;
+  const std::size_t facets = d.facets.size();
+  BoxGrid(boxes, m.dim).any_pair([&](std::size_t i, std::size_t j) {
+    if (i >= facets || j < facets) return false;
+    const Index v = verts[j - facets];
+    const double* p = m.xyz + static_cast<std::size_t>(v) * m.dim;
+    const std::vector<Vec> pts = facet_points(d, i);
+    if (meets_box(pts, m.dim, p, false)) out.push_back({v, static_cast<std::uint32_t>(i), meets_box(pts, m.dim, p, true)});
+    return false;
+  });
+  std::sort(out.begin(), out.end());
+  return out;
+}
+
+// Distance from mesh vertex v to the line / plane of domain facet f, for the report: the
+// numerator is exact (the deviations are below an ulp, so double arithmetic would lose them).
+double deviation(const MeshView& m, Index v, const Domain& d, std::size_t f) {
+  const std::vector<Vec> p = facet_points(d, f), q = points_of(m, {v});
+  const Vec e = minus(p[1], p[0]), n = m.dim == 2 ? Vec{-e[1], e[0], 0} : cross(e, minus(p[2], p[0])), w = minus(q[0], p[0]);
+  const Q dot = n[0] * w[0] + n[1] * w[1] + n[2] * w[2];
+  return std::abs(dot.get_d()) / std::sqrt(Q(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]).get_d());
+}
+
+// facet_off_domain_boundary (a facet whose vertices are all on the domain boundary but on no
+// common domain facet), then vertex_off_domain_boundary; `home` gets each facet's domain facet.
+Finding boundary_on_domain(const MeshView& m, const FacetSet& b, const Domain& d, std::vector<std::uint32_t>& home,
+                           Statistics& stats) {
+  std::vector<Index> verts(b.vertices);
+  std::sort(verts.begin(), verts.end());
+  verts.erase(std::unique(verts.begin(), verts.end()), verts.end());
+  const std::vector<OnFacet> on = incidences(m, verts, d);
+  auto range = [&](Index v) {
+    return std::equal_range(on.begin(), on.end(), OnFacet{v, 0, false}, [](const OnFacet& x, const OnFacet& y) { return x.vertex < y.vertex; });
+  };
+  home.assign(b.size(), UINT32_MAX);
+  for (std::size_t f = 0; f < b.size(); ++f) {
+    const Index* x = b.facet(f);
+    if (std::any_of(x, x + m.dim, [&](Index v) { return range(v).first == range(v).second; })) continue;
+    for (auto it = range(x[0]).first; it != range(x[0]).second && home[f] == UINT32_MAX; ++it)
+      if (std::all_of(x + 1, x + m.dim, [&](Index v) { auto r = range(v); return std::binary_search(r.first, r.second, OnFacet{v, it->facet, false}); }))
+        home[f] = it->facet;
+    if (home[f] == UINT32_MAX)
+      return finding(Defect::facet_off_domain_boundary, b.owner[f], -1, x[0],
+                     "boundary facet " + std::to_string(f) + " of element " + std::to_string(b.owner[f]) + " lies on no single domain facet");
+  }
+  for (Index v : verts) {
+    const auto r = range(v);
+    if (r.first == r.second)
+      return finding(Defect::vertex_off_domain_boundary, -1, -1, v, "boundary vertex " + std::to_string(v) + " is on no domain facet, not even within half an ulp");
+    if (std::any_of(r.first, r.second, [](const OnFacet& o) { return o.exact; })) { ++stats.vertices_exactly_on_domain_boundary; continue; }
+    ++stats.vertices_in_rounding_box_only;
+    stats.max_boundary_deviation = std::max(stats.max_boundary_deviation, deviation(m, v, d, r.first->facet));
+  }
+  return {};
+}
+
+using Edge = std::pair<Index, Index>;
+
+// Mesh edges both ways, sorted: all element edges in 2D (an internal constraint is covered by
+// interior edges), the boundary edges in 3D.
+std::vector<Edge> mesh_edges(const MeshView& m, const FacetSet& b) {
+  std::vector<Edge> e;
+  const std::size_t cells = m.dim == 2 ? m.element_count : b.size();
+  for (std::size_t c = 0; c < cells; ++c)
+    for (int i = 0; i < 3; ++i) {
+      const Index* x = m.dim == 2 ? m.cell(c) : b.facet(c);
+      e.push_back({x[i], x[(i + 1) % 3]}), e.push_back({x[(i + 1) % 3], x[i]});
+    }
+  std::sort(e.begin(), e.end());
+  e.erase(std::unique(e.begin(), e.end()), e.end());
+  return e;
+}
+
+// The mesh vertex with exactly the coordinates p, by binary search in the coordinate order.
+std::int64_t find_vertex(const MeshView& m, const std::vector<Index>& lex, const double* p) {
+  auto less = [&](Index v, const double* q) {
+    for (int k = 0; k < m.dim; ++k) if (m.coord(v, k) != q[k]) return m.coord(v, k) < q[k];
+    return false;
+  };
+  const auto it = std::lower_bound(lex.begin(), lex.end(), p, less);
+  return it != lex.end() && !less(*it, p) && std::equal(p, p + m.dim, m.xyz + static_cast<std::size_t>(*it) * m.dim) ? *it : -1;
+}
+
+// From the mesh vertex at domain point a to the one at b along mesh edges whose ends are on
+// segment ab (rounding-box rule), greedily towards b: success shows ab covered by mesh edges.
+bool walk(const MeshView& m, const std::vector<Edge>& edges, const std::vector<Index>& lex, const double* a,
+          const double* b, std::vector<Edge>& chain) {
+  const std::int64_t start = find_vertex(m, lex, a), target = find_vertex(m, lex, b);
+  if (start < 0 || target < 0) return false;
+  const std::vector<Vec> seg = {Vec{a[0], a[1], m.dim == 3 ? Q(a[2]) : Q(0)}, Vec{b[0], b[1], m.dim == 3 ? Q(b[2]) : Q(0)}};
+  std::vector<Index> seen{static_cast<Index>(start)};
+  for (Index u = seen[0]; u != target;) {
+    std::int64_t best = -1;
+    double best_distance = std::numeric_limits<double>::infinity();
+    const auto r = std::equal_range(edges.begin(), edges.end(), Edge{u, 0}, [](const Edge& x, const Edge& y) { return x.first < y.first; });
+    for (auto it = r.first; it != r.second; ++it) {
+      const double* p = m.xyz + static_cast<std::size_t>(it->second) * m.dim;
+      double dist = 0;
+      for (int k = 0; k < m.dim; ++k) dist += (p[k] - b[k]) * (p[k] - b[k]);
+      if (dist < best_distance && std::find(seen.begin(), seen.end(), it->second) == seen.end() && meets_box(seg, m.dim, p, false))
+        best = it->second, best_distance = dist;
+    }
+    if (best < 0) return false;
+    chain.push_back(std::minmax(u, static_cast<Index>(best)));
+    seen.push_back(u = static_cast<Index>(best));
+  }
+  return true;
+}
+
+// Every domain facet covered: its edges by chains of mesh edges (walk), and in 3D its area by
+// the boundary facets on it, whose mod-2 boundary must be exactly those chains: a 2-chain
+// with that boundary covers the face an odd number of times, and embedded facets cover once.
+Finding coverage(const MeshView& m, const FacetSet& b, const Domain& d, const std::vector<Index>& lex,
+                 const std::vector<std::uint32_t>& home) {
+  const std::vector<Edge> edges = mesh_edges(m, b);
+  std::vector<std::pair<std::uint32_t, std::size_t>> on_face;  // (domain facet, boundary facet)
+  for (std::size_t g = 0; g < b.size(); ++g) on_face.push_back({home[g], g});
+  std::sort(on_face.begin(), on_face.end());
+  auto next = on_face.begin();
+  for (std::size_t f = 0; f < d.facets.size(); ++f) {
+    const Index* x = d.facets.facet(f);
+    std::vector<Edge> chain, edges_on_face, odd;
+    for (int i = 0; i < (m.dim == 2 ? 1 : 3); ++i)
+      if (!walk(m, edges, lex, d.geo.xyz + static_cast<std::size_t>(x[i]) * m.dim, d.geo.xyz + static_cast<std::size_t>(x[(i + 1) % m.dim]) * m.dim, chain))
+        return finding(Defect::domain_boundary_not_covered, -1, static_cast<std::int64_t>(f), -1,
+                       "domain facet " + std::to_string(f) + ": its edge from domain vertex " + std::to_string(x[i]) + " to " +
+                           std::to_string(x[(i + 1) % m.dim]) + " is not covered by mesh edges on it");
+    if (m.dim == 2) continue;
+    for (; next != on_face.end() && next->first == f; ++next)
+      for (int i = 0; i < 3; ++i) edges_on_face.push_back(std::minmax(b.facet(next->second)[i], b.facet(next->second)[(i + 1) % 3]));
+    std::sort(edges_on_face.begin(), edges_on_face.end());
+    for (std::size_t i = 0, j = 0; i < edges_on_face.size(); i = j) {
+      while (j < edges_on_face.size() && edges_on_face[j] == edges_on_face[i]) ++j;
+      if ((j - i) % 2 == 1) odd.push_back(edges_on_face[i]);
+    }
+    std::sort(chain.begin(), chain.end());
+    chain.erase(std::unique(chain.begin(), chain.end()), chain.end());
+    if (odd != chain)
+      return finding(Defect::domain_boundary_not_covered, -1, static_cast<std::int64_t>(f), -1,
+                     "domain triangle " + std::to_string(f) + " is not covered exactly by the mesh boundary triangles on it");
+  }
+  return {};
+}
+
+// hole_covered, then region_not_meshed: each hole point strictly outside the mesh (W = 0, off
+// the boundary), and each cavity component of the mesh boundary the innermost component
+// around some hole point.
+Finding holes_and_regions(const MeshView& m, const FacetSet& b, const Components& comps, const io::MeshData& data) {
+  std::vector<char> has_hole(comps.facets.size(), 0);
+  for (std::size_t h = 0; h < data.hole_count(); ++h) {
+    const double* p = data.holes.data() + h * static_cast<std::size_t>(m.dim);
+    auto inside = [&](const Box& box) {
+      for (int k = 0; k < m.dim; ++k) if (p[k] < box.lo[k] || p[k] > box.hi[k]) return false;
+      return true;
+    };
+    bool covered = false;
+    for (std::size_t f = 0; f < b.size() && !covered; ++f) {
+      const Index* x = b.facet(f);
+      covered = inside(facet_box(m, x, m.dim)) && meets_box(m.dim == 2 ? points_of(m, {x[0], x[1]}) : points_of(m, {x[0], x[1], x[2]}), m.dim, p, true);
+    }
+    int w = 0;
+    std::size_t innermost = SIZE_MAX;
+    for (std::size_t c = 0; c < comps.facets.size() && !covered; ++c) {
+      const int wc = inside(comps.box[c]) ? winding_number(m, b, comps.facets[c], p) : 0;
+      w += wc;
+      if (wc != 0 && (innermost == SIZE_MAX || comps.enclosed_by[c].size() > comps.enclosed_by[innermost].size())) innermost = c;
+    }
+    if (covered || w != 0)
+      return finding(Defect::hole_covered, -1, static_cast<std::int64_t>(h), -1, "hole point " + std::to_string(h) + " is covered by the mesh");
+    if (innermost != SIZE_MAX) has_hole[innermost] = 1;
+  }
+  for (std::size_t c = 0; c < comps.facets.size(); ++c)
+    if (comps.measure_sign[c] < 0 && !has_hole[c])
+      return finding(Defect::region_not_meshed, b.owner[comps.facets[c][0]], -1, comps.vertex[c],
+                     "the region inside the boundary component through vertex " + std::to_string(comps.vertex[c]) +
+                         " is not meshed and holds no hole point");
+  return {};
+}
+
+}  // namespace
+
+Finding check_domain(const MeshView& m, const FacetSet& boundary, const Components& comps,
+                     const std::vector<Index>& lex_order, const io::MeshData& domain, Statistics& stats) {
+  Domain d;
+  Finding f = load_domain(domain, m.dim, d);
+  std::vector<std::uint32_t> home;
+  if (f.defect == Defect::none) f = boundary_on_domain(m, boundary, d, home, stats);
+  if (f.defect == Defect::none) f = coverage(m, boundary, d, lex_order, home);
+  if (f.defect == Defect::none) f = holes_and_regions(m, boundary, comps, domain);
+  return f;
+}
+
+}  // namespace certimesh::certificate::detail

@@ -36,6 +36,10 @@ Finding check_boundary_manifold(const MeshView& m, const FacetSet& boundary, Com
 /// Condition 4, second half (t_junction, boundary_intersection), exact.
 Finding check_boundary_embedding(const MeshView& m, const FacetSet& boundary);
 
+/// The first pair of facets of `set` meeting beyond shared vertices, exactly: `touching` when
+/// a vertex of one lies on the other, else `crossing` (condition 4, and the domain's check).
+Finding first_contact(const MeshView& m, const FacetSet& set, Defect touching, Defect crossing, const std::string& what);
+
 /// Condition 5 (multiple_cover): winding numbers of the components at each other's vertices.
 Finding check_single_cover(const MeshView& m, const FacetSet& boundary, Components& comps);
 
@@ -45,5 +49,13 @@ int winding_number(const MeshView& m, const FacetSet& boundary, const std::vecto
 
 /// Sign of the area (2D) / volume (3D) enclosed by oriented closed facets: filtered, then exact.
 int enclosed_measure_sign(const MeshView& m, const FacetSet& set, const std::vector<std::size_t>& facets);
+
+/// Condition 6 (invalid_domain .. region_not_meshed, in the order of defect.h) and the
+/// statistics of boundary vertices on the domain boundary.
+Finding check_domain(const MeshView& m, const FacetSet& boundary, const Components& comps,
+                     const std::vector<Index>& lex_order, const io::MeshData& domain, Statistics& stats);
+
+/// Lower-case hex SHA-256 of the canonical binary form of the mesh (proofs/mesh_certificate.md).
+std::string mesh_sha256(const io::MeshData& mesh);
 
 }  // namespace certimesh::certificate::detail
