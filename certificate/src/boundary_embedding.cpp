@@ -6,7 +6,6 @@
 
 #include "certimesh/predicates/intersection/segment_segment_2d.h"
 #include "certimesh/predicates/orient2d.h"
-#include "certimesh/predicates/orient3d.h"
 #include "certimesh/predicates/intersection/triangle_segment_3d.h"
 #include "certimesh/predicates/intersection/triangle_triangle_3d.h"
 #include "close_pairs.h"
@@ -21,27 +20,6 @@ namespace {
 
 std::array<predicates::Vertex3, 3> triangle(const MeshView& m, Index a, Index b, Index c) {
   return {{{m.p3(a), a}, {m.p3(b), b}, {m.p3(c), c}}};
-}
-
-bool segment_meets_triangle(const MeshView& m, Index a, Index b, const std::array<predicates::Vertex3, 3>& t) {
-  const std::array<predicates::Vertex3, 2> s{{{m.p3(a), a}, {m.p3(b), b}}};
-  return predicates::triangle_segment_3d(t, s, IntersectionMode::exact) == Overlap::intersect;
-}
-
-// Triangles (a,b,c) and (a,b,d) sharing edge ab meet beyond it iff they are coplanar and c, d
-// lie on the same side of ab; the side is read in a coordinate projection where abc is not
-// degenerate (facets of positive elements never are).
-bool edge_neighbours_overlap(const MeshView& m, Index a, Index b, Index c, Index d) {
-  if (predicates::orient3d(m.p3(a), m.p3(b), m.p3(c), m.p3(d)) != predicates::Sign::zero) return false;
-  for (int drop = 0; drop < 3; ++drop) {
-    auto p = [&](Index v) {
-      const int u = drop == 0 ? 1 : 0, w = drop == 2 ? 1 : 2;
-      return predicates::Point2{m.coord(v, u), m.coord(v, w)};
-    };
-    const predicates::Sign sc = predicates::orient2d(p(a), p(b), p(c));
-    if (sc != predicates::Sign::zero) return predicates::orient2d(p(a), p(b), p(d)) == sc;
-  }
-  return true;  // unreachable for a non-degenerate triangle
 }
 
 // A fast certificate that triangles f and g meet at most in their shared vertices: in some
@@ -70,23 +48,9 @@ bool separated_in_projection(const MeshView& m, const Index* f, const Index* g) 
   return false;
 }
 
-// The exact rules of condition 4 by the number of shared vertices (proofs/mesh_certificate.md).
+// Exact, after the fast certificate; the predicates treat shared ids as the allowed contact.
 bool triangles_meet(const MeshView& m, const Index* f, const Index* g) {
-  int shared = 0, fi[3], gi[3];
-  for (int i = 0; i < 3; ++i)
-    for (int j = 0; j < 3; ++j)
-      if (f[i] == g[j]) fi[shared] = i, gi[shared] = j, ++shared;
-  if (shared == 3) return true;  // the same triangle twice: impossible after facet pairing
   if (separated_in_projection(m, f, g)) return false;
-  if (shared == 2) {
-    const int c = 3 - fi[0] - fi[1], d = 3 - gi[0] - gi[1];
-    return edge_neighbours_overlap(m, f[fi[0]], f[fi[1]], f[c], g[d]);
-  }
-  if (shared == 1) {  // (a,b,c), (a,d,e): bc against ade, de against abc
-    const Index b = f[(fi[0] + 1) % 3], c = f[(fi[0] + 2) % 3], d = g[(gi[0] + 1) % 3], e = g[(gi[0] + 2) % 3];
-    return segment_meets_triangle(m, b, c, triangle(m, g[0], g[1], g[2])) ||
-           segment_meets_triangle(m, d, e, triangle(m, f[0], f[1], f[2]));
-  }
   return predicates::triangle_triangle_3d(triangle(m, f[0], f[1], f[2]), triangle(m, g[0], g[1], g[2]),
                                           IntersectionMode::exact) == Overlap::intersect;
 }

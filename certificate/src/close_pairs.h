@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
 #include <vector>
 
 #include "mesh_view.h"
@@ -34,23 +35,25 @@ class BoxGrid {
   int dim_;
   int cells_ = 1;
   double lo_[3] = {0, 0, 0}, scale_[3] = {0, 0, 0};
-  std::vector<std::size_t> start_, members_;
+  std::vector<std::pair<std::size_t, std::size_t>> entries_;  // (cell, box), sorted
 };
 
 template <class Visit>
 bool BoxGrid::any_pair(Visit visit) const {
-  for (std::size_t c = 0; c + 1 < start_.size(); ++c)
-    for (std::size_t a = start_[c]; a < start_[c + 1]; ++a)
-      for (std::size_t b = a + 1; b < start_[c + 1]; ++b) {
-        const std::size_t i = members_[a], j = members_[b];
+  for (std::size_t first = 0, end = 0; first < entries_.size(); first = end) {
+    const std::size_t c = entries_[first].first;
+    while (end < entries_.size() && entries_[end].first == c) ++end;
+    for (std::size_t a = first; a < end; ++a)
+      for (std::size_t b = a + 1; b < end; ++b) {
+        const std::size_t i = entries_[a].second, j = entries_[b].second;
         if (!boxes_overlap(boxes_[i], boxes_[j], dim_)) continue;
-        int fi[3], li[3], fj[3], lj[3];
+        int fi[3], li[3], fj[3], lj[3], common[3] = {0, 0, 0};
         range(boxes_[i], fi, li);
         range(boxes_[j], fj, lj);
-        int first[3] = {0, 0, 0};
-        for (int k = 0; k < dim_; ++k) first[k] = std::max(fi[k], fj[k]);
-        if (index(first) == c && visit(i, j)) return true;
+        for (int k = 0; k < dim_; ++k) common[k] = std::max(fi[k], fj[k]);
+        if (index(common) == c && visit(i, j)) return true;
       }
+  }
   return false;
 }
 

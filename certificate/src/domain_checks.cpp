@@ -9,7 +9,6 @@
 #include <limits>
 #include <numeric>
 
-#include "certimesh/predicates/orient2d.h"
 #include "close_pairs.h"
 #include "stages.h"
 
@@ -64,15 +63,12 @@ bool meets_box(const std::vector<Vec>& pts, int dim, const double* p, bool point
   return true;
 }
 
-std::vector<Vec> points_of(const MeshView& g, std::initializer_list<Index> ids) {
+std::vector<Vec> points_of(const MeshView& g, const Index* ids, int count) {
   std::vector<Vec> out;
-  for (Index v : ids) out.push_back(Vec{g.coord(v, 0), g.coord(v, 1), g.dim == 3 ? Q(g.coord(v, 2)) : Q(0)});
+  for (int i = 0; i < count; ++i) out.push_back(Vec{g.coord(ids[i], 0), g.coord(ids[i], 1), g.dim == 3 ? Q(g.coord(ids[i], 2)) : Q(0)});
   return out;
 }
-std::vector<Vec> facet_points(const Domain& d, std::size_t f) {
-  const Index* x = d.facets.facet(f);
-  return d.geo.dim == 2 ? points_of(d.geo, {x[0], x[1]}) : points_of(d.geo, {x[0], x[1], x[2]});
-}
+std::vector<Vec> facet_points(const Domain& d, std::size_t f) { return points_of(d.geo, d.facets.facet(f), d.geo.dim); }
 
 Finding invalid(const std::string& why, std::int64_t facet = -1) {
   return finding(Defect::invalid_domain, -1, facet, -1, "the domain " + why);
@@ -130,7 +126,7 @@ std::vector<OnFacet> incidences(const MeshView& m, const std::vector<Index>& ver
 // Distance from mesh vertex v to the line / plane of domain facet f, for the report: the
 // numerator is exact (the deviations are below an ulp, so double arithmetic would lose them).
 double deviation(const MeshView& m, Index v, const Domain& d, std::size_t f) {
-  const std::vector<Vec> p = facet_points(d, f), q = points_of(m, {v});
+  const std::vector<Vec> p = facet_points(d, f), q = points_of(m, &v, 1);
   const Vec e = minus(p[1], p[0]), n = m.dim == 2 ? Vec{-e[1], e[0], 0} : cross(e, minus(p[2], p[0])), w = minus(q[0], p[0]);
   const Q dot = n[0] * w[0] + n[1] * w[1] + n[2] * w[2];
   return std::abs(dot.get_d()) / std::sqrt(Q(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]).get_d());
@@ -271,7 +267,7 @@ Finding holes_and_regions(const MeshView& m, const FacetSet& b, const Components
     bool covered = false;
     for (std::size_t f = 0; f < b.size() && !covered; ++f) {
       const Index* x = b.facet(f);
-      covered = inside(facet_box(m, x, m.dim)) && meets_box(m.dim == 2 ? points_of(m, {x[0], x[1]}) : points_of(m, {x[0], x[1], x[2]}), m.dim, p, true);
+      covered = inside(facet_box(m, x, m.dim)) && meets_box(points_of(m, x, m.dim), m.dim, p, true);
     }
     int w = 0;
     std::size_t innermost = SIZE_MAX;

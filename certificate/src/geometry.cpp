@@ -49,32 +49,21 @@ BoxGrid::BoxGrid(const std::vector<Box>& boxes, int dim) : boxes_(boxes), dim_(d
       const double extent = hi[k] - lo_[k];
       scale_[k] = extent > 0 && std::isfinite(extent) ? cells_ / extent : 0.0;
     }
-    start_.assign(static_cast<std::size_t>(std::pow(cells_, dim)) + 1, 0);
-    std::size_t total = 0;
-    for (const Box& b : boxes) {
-      int f[3], l[3];
-      range(b, f, l);
-      total += static_cast<std::size_t>(l[0] - f[0] + 1) * static_cast<std::size_t>(l[1] - f[1] + 1) *
-               static_cast<std::size_t>(l[2] - f[2] + 1);
-    }
-    if (total <= 16 * boxes.size() + 1024 || cells_ == 1) break;
-  }
-  for (int pass = 0; pass < 2; ++pass) {  // counting sort of (cell, box) entries
-    std::vector<std::size_t> fill(start_.begin(), start_.end() - 1);
-    if (pass == 1) members_.resize(start_.back());
-    for (std::size_t i = 0; i < boxes.size(); ++i) {
+    entries_.clear();
+    bool fits = true;
+    for (std::size_t i = 0; i < boxes.size() && fits; ++i) {
       int f[3], l[3], c[3];
       range(boxes[i], f, l);
-      for (c[2] = f[2]; c[2] <= l[2]; ++c[2])
+      const auto count = static_cast<std::size_t>(l[0] - f[0] + 1) * static_cast<std::size_t>(l[1] - f[1] + 1) *
+                         static_cast<std::size_t>(l[2] - f[2] + 1);
+      fits = cells_ == 1 || entries_.size() + count <= 16 * boxes.size() + 1024;
+      for (c[2] = f[2]; fits && c[2] <= l[2]; ++c[2])
         for (c[1] = f[1]; c[1] <= l[1]; ++c[1])
-          for (c[0] = f[0]; c[0] <= l[0]; ++c[0]) {
-            if (pass == 0) ++start_[index(c) + 1];
-            else members_[fill[index(c)]++] = i;
-          }
+          for (c[0] = f[0]; c[0] <= l[0]; ++c[0]) entries_.push_back({index(c), i});
     }
-    if (pass == 0)
-      for (std::size_t c = 0; c + 1 < start_.size(); ++c) start_[c + 1] += start_[c];
+    if (fits) break;
   }
+  std::sort(entries_.begin(), entries_.end());
 }
 
 }  // namespace certimesh::certificate::detail

@@ -15,30 +15,22 @@ namespace {
 
 using predicates::Sign;
 
-// det[a-r, b-r] (2D) or det[a-r, b-r, c-r] (3D) and its permanent (sum of absolute products).
-void facet_term(const MeshView& m, const Index* f, Index r, double& term, double& permanent) {
-  double d[3][3];
+// det[a-r, b-r] (2D) or det[a-r, b-r, c-r] (3D) in T (double or exact rationals); with
+// `absolute`, the permanent instead (every product counted positive), which bounds the
+// rounding error of the double determinant (Shewchuk).
+template <class T>
+T facet_det(const MeshView& m, const Index* f, Index r, bool absolute) {
+  using std::abs;
+  T d[3][3];
   for (int i = 0; i < m.dim; ++i)
-    for (int k = 0; k < m.dim; ++k) d[i][k] = m.coord(f[i], k) - m.coord(r, k);
-  if (m.dim == 2) {
-    term = d[0][0] * d[1][1] - d[0][1] * d[1][0];
-    permanent = std::abs(d[0][0] * d[1][1]) + std::abs(d[0][1] * d[1][0]);
-    return;
-  }
-  term = d[0][0] * (d[1][1] * d[2][2] - d[1][2] * d[2][1]) - d[0][1] * (d[1][0] * d[2][2] - d[1][2] * d[2][0]) +
-         d[0][2] * (d[1][0] * d[2][1] - d[1][1] * d[2][0]);
-  permanent = std::abs(d[0][0]) * (std::abs(d[1][1] * d[2][2]) + std::abs(d[1][2] * d[2][1])) +
-              std::abs(d[0][1]) * (std::abs(d[1][0] * d[2][2]) + std::abs(d[1][2] * d[2][0])) +
-              std::abs(d[0][2]) * (std::abs(d[1][0] * d[2][1]) + std::abs(d[1][1] * d[2][0]));
-}
-
-mpq_class exact_term(const MeshView& m, const Index* f, Index r) {
-  mpq_class d[3][3];
-  for (int i = 0; i < m.dim; ++i)
-    for (int k = 0; k < m.dim; ++k) d[i][k] = mpq_class(m.coord(f[i], k)) - mpq_class(m.coord(r, k));
-  if (m.dim == 2) return d[0][0] * d[1][1] - d[0][1] * d[1][0];
-  return d[0][0] * (d[1][1] * d[2][2] - d[1][2] * d[2][1]) - d[0][1] * (d[1][0] * d[2][2] - d[1][2] * d[2][0]) +
-         d[0][2] * (d[1][0] * d[2][1] - d[1][1] * d[2][0]);
+    for (int k = 0; k < m.dim; ++k) {
+      d[i][k] = T(m.coord(f[i], k)) - T(m.coord(r, k));
+      if (absolute) d[i][k] = abs(d[i][k]);
+    }
+  const T s = absolute ? T(1) : T(-1);
+  if (m.dim == 2) return d[0][0] * d[1][1] + s * d[0][1] * d[1][0];
+  return d[0][0] * (d[1][1] * d[2][2] + s * d[1][2] * d[2][1]) + s * d[0][1] * (d[1][0] * d[2][2] + s * d[1][2] * d[2][0]) +
+         d[0][2] * (d[1][0] * d[2][1] + s * d[1][1] * d[2][0]);
 }
 
 int winding_2d(const MeshView& m, const FacetSet& b, const std::vector<std::size_t>& c, const double* p) {
@@ -82,8 +74,7 @@ int enclosed_measure_sign(const MeshView& m, const FacetSet& set, const std::vec
   const Index r = set.facet(facets[0])[0];
   double sum = 0, permanents = 0, magnitudes = 0;
   for (std::size_t f : facets) {
-    double term = 0, permanent = 0;
-    facet_term(m, set.facet(f), r, term, permanent);
+    const double term = facet_det<double>(m, set.facet(f), r, false), permanent = facet_det<double>(m, set.facet(f), r, true);
     sum += term, permanents += permanent, magnitudes += std::abs(term);
   }
   // Shewchuk's bound for one determinant is below 4ε (2D) / 8ε (3D) times its permanent; the
@@ -94,7 +85,7 @@ int enclosed_measure_sign(const MeshView& m, const FacetSet& set, const std::vec
                        64 * n * std::numeric_limits<double>::denorm_min();
   if (std::isfinite(bound) && std::abs(sum) > bound) return sum > 0 ? 1 : -1;
   mpq_class exact = 0;
-  for (std::size_t f : facets) exact += exact_term(m, set.facet(f), r);
+  for (std::size_t f : facets) exact += facet_det<mpq_class>(m, set.facet(f), r, false);
   return sgn(exact);
 }
 
