@@ -200,21 +200,20 @@ ElementId SimplexMesh<E, S>::take_element_slot() {
 }
 
 template <int E, int S>
-void SimplexMesh<E, S>::count_probes(const Key& key) const noexcept {
-  ++stats_.lookups;
-  stats_.probes += facets_.bucket_size(facets_.bucket(key));
+void SimplexMesh<E, S>::count_lookup() const noexcept {
+  ++lookups_;
 }
 
 template <int E, int S>
 typename SimplexMesh<E, S>::FacetHolder* SimplexMesh<E, S>::find_holder(const Key& key) {
-  count_probes(key);
+  count_lookup();
   const auto it = facets_.find(key);
   return it == facets_.end() ? nullptr : &it->second;
 }
 
 template <int E, int S>
 const typename SimplexMesh<E, S>::FacetHolder* SimplexMesh<E, S>::find_holder(const Key& key) const {
-  count_probes(key);
+  count_lookup();
   const auto it = facets_.find(key);
   return it == facets_.end() ? nullptr : &it->second;
 }
@@ -267,7 +266,7 @@ ElementId SimplexMesh<E, S>::add_element(const Element& vertices, Label label) {
 template <int E, int S>
 void SimplexMesh<E, S>::unlink_facet(ElementId e, const Element& vertices, int i) {
   const Key key = facet_key(vertices, i);
-  count_probes(key);
+  count_lookup();
   const auto it = facets_.find(key);
   const ElementId n = neighbour_slot(e, i);
   if (n == no_element) {

@@ -34,4 +34,19 @@ struct FacetKeyHash {
   }
 };
 
+/// Key equality that counts how often it is asked: the number of stored keys a lookup
+/// compares against, which is the work measure the tests bound (no timing in unit tests).
+/// The count lives in the functor, so it moves and copies with the table that owns it.
+struct CountingFacetKeyEqual {
+  mutable std::uint64_t comparisons = 0;
+  template <std::size_t N>
+  bool operator()(const std::array<std::uint32_t, N>& a, const std::array<std::uint32_t, N>& b) const noexcept {
+    ++comparisons;
+    // Element by element: std::array's == becomes an out-of-line memcmp call here.
+    for (std::size_t k = 0; k < N; ++k)
+      if (a[k] != b[k]) return false;
+    return true;
+  }
+};
+
 }  // namespace certimesh::topology

@@ -44,8 +44,8 @@ namespace certimesh::topology {
 
 using Label = io::Label;
 
-/// Work done by the facet table, for checking that adjacency updates are O(1): `probes` is
-/// the number of stored facets compared against a key (the length of every hash chain walked).
+/// Work done by the facet table, for checking that adjacency updates are O(1): `lookups`
+/// counts facet-table searches, `probes` the stored keys compared against a searched key.
 struct FacetTableStats {
   std::uint64_t lookups = 0;
   std::uint64_t probes = 0;
@@ -116,7 +116,9 @@ class SimplexMesh {
   /// The label set for this facet (any orientation), 0 if none was.
   Label facet_label(const Facet& f) const;
 
-  FacetTableStats facet_table_stats() const noexcept { return stats_; }
+  FacetTableStats facet_table_stats() const noexcept {
+    return FacetTableStats{lookups_, facets_.key_eq().comparisons};
+  }
   void reserve(std::size_t vertices, std::size_t elements);
 
   static Key key_of(const Facet& f) noexcept;
@@ -132,7 +134,7 @@ class SimplexMesh {
   void check_new_vertices(const Element& vertices) const;
   static Key facet_key(const Element& vertices, int i) noexcept;
   ElementId take_element_slot();
-  void count_probes(const Key& key) const noexcept;
+  void count_lookup() const noexcept;
   FacetHolder* find_holder(const Key& key);
   const FacetHolder* find_holder(const Key& key) const;
   ElementId& neighbour_slot(ElementId e, int i) noexcept;
@@ -154,9 +156,9 @@ class SimplexMesh {
   std::vector<ElementId> free_elements_;
   std::size_t live_elements_ = 0;
 
-  std::unordered_map<Key, FacetHolder, FacetKeyHash> facets_;
+  std::unordered_map<Key, FacetHolder, FacetKeyHash, CountingFacetKeyEqual> facets_;
   std::unordered_map<Key, Label, FacetKeyHash> facet_labels_;
-  mutable FacetTableStats stats_;
+  mutable std::uint64_t lookups_ = 0;
 };
 
 using TriangleMesh2 = SimplexMesh<2, 2>;
