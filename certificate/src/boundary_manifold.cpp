@@ -110,22 +110,14 @@ Finding check_boundary_manifold(const MeshView& m, const FacetSet& b, Components
   Finding f = m.dim == 2 ? loops_2d(m, b, uf) : edges_3d(b, uf);
   if (f.defect == Defect::none && m.dim == 3) f = links_3d(m, b);
   if (f.defect != Defect::none) return f;
-  std::vector<std::size_t> id(b.size(), SIZE_MAX);
+  std::vector<std::size_t> id(b.size(), SIZE_MAX);  // components numbered by first facet
   for (std::size_t i = 0; i < b.size(); ++i) {
-    const std::size_t root = uf.find(i);
-    if (id[root] == SIZE_MAX) {
-      id[root] = comps.facets.size();
-      comps.facets.emplace_back();
-      comps.vertex.push_back(b.facet(i)[0]);
-      comps.box.push_back(facet_box(m, b.facet(i), m.dim));
-    }
-    const std::size_t c = id[root];
-    comps.facets[c].push_back(i);
+    const std::size_t root = uf.find(i), c = id[root] == SIZE_MAX ? (id[root] = comps.facets.size()) : id[root];
     const Box fb = facet_box(m, b.facet(i), m.dim);
-    for (int k = 0; k < m.dim; ++k) {
-      comps.box[c].lo[k] = std::min(comps.box[c].lo[k], fb.lo[k]);
-      comps.box[c].hi[k] = std::max(comps.box[c].hi[k], fb.hi[k]);
-    }
+    if (c == comps.facets.size()) comps.facets.emplace_back(), comps.vertex.push_back(b.facet(i)[0]), comps.box.push_back(fb);
+    comps.facets[c].push_back(i);
+    for (int k = 0; k < m.dim; ++k)
+      comps.box[c].lo[k] = std::min(comps.box[c].lo[k], fb.lo[k]), comps.box[c].hi[k] = std::max(comps.box[c].hi[k], fb.hi[k]);
   }
   for (const auto& c : comps.facets) comps.measure_sign.push_back(enclosed_measure_sign(m, b, c));
   return {};

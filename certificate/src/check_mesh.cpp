@@ -10,14 +10,10 @@ namespace certimesh::certificate {
 namespace {
 
 detail::MeshView view_of(const io::MeshData& mesh) {
-  detail::MeshView m;
-  m.dim = mesh.dimension == 3 ? 3 : 2;
-  m.xyz = mesh.coordinates.data();
-  m.vertex_count = mesh.coordinates.size() / static_cast<std::size_t>(m.dim);
-  const auto& cells = m.dim == 2 ? mesh.triangles : mesh.tetrahedra;
-  m.cells = cells.data();
-  m.element_count = cells.size() / static_cast<std::size_t>(m.dim + 1);
-  return m;
+  const int dim = mesh.dimension == 3 ? 3 : 2;
+  const auto& cells = dim == 2 ? mesh.triangles : mesh.tetrahedra;
+  return {dim, mesh.coordinates.data(), mesh.coordinates.size() / static_cast<std::size_t>(dim), cells.data(),
+          cells.size() / static_cast<std::size_t>(dim + 1)};
 }
 
 Finding run_stages(const detail::MeshView& m, const io::MeshData* domain, Statistics& stats) {

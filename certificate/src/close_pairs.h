@@ -27,10 +27,7 @@ class BoxGrid {
     return t >= cells_ - 1 ? cells_ - 1 : static_cast<int>(t);
   }
   void range(const Box& b, int first[3], int last[3]) const;
-  std::size_t index(const int c[3]) const {
-    return (static_cast<std::size_t>(c[2]) * static_cast<std::size_t>(cells_) + static_cast<std::size_t>(c[1])) *
-               static_cast<std::size_t>(cells_) + static_cast<std::size_t>(c[0]);
-  }
+  std::size_t index(const int c[3]) const { return (std::size_t(c[2]) * std::size_t(cells_) + std::size_t(c[1])) * std::size_t(cells_) + std::size_t(c[0]); }
   const std::vector<Box>& boxes_;
   int dim_;
   int cells_ = 1;

@@ -184,12 +184,10 @@ std::vector<Edge> mesh_edges(const MeshView& m, const FacetSet& b) {
 
 // The mesh vertex with exactly the coordinates p, by binary search in the coordinate order.
 std::int64_t find_vertex(const MeshView& m, const std::vector<Index>& lex, const double* p) {
-  auto less = [&](Index v, const double* q) {
-    for (int k = 0; k < m.dim; ++k) if (m.coord(v, k) != q[k]) return m.coord(v, k) < q[k];
-    return false;
-  };
-  const auto it = std::lower_bound(lex.begin(), lex.end(), p, less);
-  return it != lex.end() && !less(*it, p) && std::equal(p, p + m.dim, m.xyz + static_cast<std::size_t>(*it) * m.dim) ? *it : -1;
+  const auto it = std::lower_bound(lex.begin(), lex.end(), p, [&](Index v, const double* q) {
+    return std::lexicographical_compare(m.xyz + static_cast<std::size_t>(v) * m.dim, m.xyz + (static_cast<std::size_t>(v) + 1) * m.dim, q, q + m.dim);
+  });
+  return it != lex.end() && std::equal(p, p + m.dim, m.xyz + static_cast<std::size_t>(*it) * m.dim) ? *it : -1;
 }
 
 // From the mesh vertex at domain point a to the one at b along mesh edges whose ends are on
@@ -260,10 +258,7 @@ Finding holes_and_regions(const MeshView& m, const FacetSet& b, const Components
   std::vector<char> has_hole(comps.facets.size(), 0);
   for (std::size_t h = 0; h < data.hole_count(); ++h) {
     const double* p = data.holes.data() + h * static_cast<std::size_t>(m.dim);
-    auto inside = [&](const Box& box) {
-      for (int k = 0; k < m.dim; ++k) if (p[k] < box.lo[k] || p[k] > box.hi[k]) return false;
-      return true;
-    };
+    auto inside = [&](const Box& box) { return boxes_overlap(box, Box{{p[0], p[1], p[m.dim - 1]}, {p[0], p[1], p[m.dim - 1]}}, m.dim); };
     bool covered = false;
     for (std::size_t f = 0; f < b.size() && !covered; ++f) {
       const Index* x = b.facet(f);

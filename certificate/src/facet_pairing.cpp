@@ -60,10 +60,8 @@ Index facet_min(const Index* c, int corners, int i) {
 // The record array is the one big allocation (12 bytes per facet). Backing it with huge
 // pages where the system offers them (Linux madvise mode) saves most of the page faults,
 // which otherwise cost as much as the matching itself on a virtual machine.
-struct FreeRecords {
-  void operator()(Record* p) const { std::free(p); }
-};
-std::unique_ptr<Record[], FreeRecords> allocate_records(std::size_t count) {
+using Records = std::unique_ptr<Record[], decltype(&std::free)>;
+Records allocate_records(std::size_t count) {
   constexpr std::size_t kHuge = std::size_t{1} << 21;
   const std::size_t bytes = (std::max<std::size_t>(count, 1) * sizeof(Record) + kHuge - 1) / kHuge * kHuge;
   void* p = std::aligned_alloc(kHuge, bytes);
@@ -71,12 +69,10 @@ std::unique_ptr<Record[], FreeRecords> allocate_records(std::size_t count) {
 #ifdef MADV_HUGEPAGE
   madvise(p, bytes, MADV_HUGEPAGE);
 #endif
-  return std::unique_ptr<Record[], FreeRecords>(static_cast<Record*>(p));
+  return Records(static_cast<Record*>(p), &std::free);
 }
 
-struct Pass {
-  Finding duplicate, non_manifold, inconsistent;
-};
+struct Pass { Finding duplicate, non_manifold, inconsistent; };
 
 std::string facet_text(const MeshView& m, Index lo, const Record& r) {
   std::string s = "facet (" + std::to_string(lo) + ", " + std::to_string(r.hi0);

@@ -43,11 +43,9 @@ Finding first_contact(const MeshView& m, const FacetSet& set, Defect touching, D
 /// Condition 5 (multiple_cover): winding numbers of the components at each other's vertices.
 Finding check_single_cover(const MeshView& m, const FacetSet& boundary, Components& comps);
 
-/// Exact winding number of component `c` around point `p` (which must be off it).
-int winding_number(const MeshView& m, const FacetSet& boundary, const std::vector<std::size_t>& c,
-                   const double* p);
-
-/// Sign of the area (2D) / volume (3D) enclosed by oriented closed facets: filtered, then exact.
+/// Exact winding number of component `c` around point `p` (off it); the sign of the area /
+/// volume enclosed by closed oriented facets (filtered, then exact).
+int winding_number(const MeshView& m, const FacetSet& boundary, const std::vector<std::size_t>& c, const double* p);
 int enclosed_measure_sign(const MeshView& m, const FacetSet& set, const std::vector<std::size_t>& facets);
 
 /// Condition 6 (invalid_domain .. region_not_meshed, in the order of defect.h) and the
