@@ -266,11 +266,24 @@ def main():
     # A corner triangle removed: its diagonal is now a boundary facet inside the square.
     rp, rt = kuhn_2d(4, 4)
     write_medit("facet_off_domain_2d.mesh", rp, rt[1:])
-    case("facet_off_domain_2d.mesh", "square4.poly", 1, "facet_off_domain_boundary", 31)
+    # Its vertex (1,1) is now a boundary vertex off the domain as well: either defect (README).
+    case("facet_off_domain_2d.mesh", "square4.poly", 1, "facet_off_domain_boundary|vertex_off_domain_boundary", 31)
     case("facet_off_domain_2d.mesh", None, 0, "none", 31)
     rp, rt = kuhn_3d(2)
     write_medit("facet_off_domain_3d.mesh", rp, rt[1:])
-    case("facet_off_domain_3d.mesh", "cube2_surface.mesh", 1, "facet_off_domain_boundary", 47)
+    case("facet_off_domain_3d.mesh", "cube2_surface.mesh", 1, "facet_off_domain_boundary|vertex_off_domain_boundary", 47)
+    # Corner cut: the elements of the corner (4,0) / (2,0,0) and that vertex removed. Every
+    # boundary vertex is still on the domain boundary; the new facets cross the corner.
+    cp2, ct2 = kuhn_2d(4, 4)
+    ct2 = [t for t in ct2 if 4 not in t]
+    cp2, ct2 = compact(cp2, ct2)
+    write_medit("corner_cut_2d.mesh", cp2, ct2)
+    case("corner_cut_2d.mesh", "square4.poly", 1, "facet_off_domain_boundary", 31)
+    cp3, ct3 = kuhn_3d(2)
+    ct3 = [t for t in ct3 if 2 not in t]
+    cp3, ct3 = compact(cp3, ct3)
+    write_medit("corner_cut_3d.mesh", cp3, ct3)
+    case("corner_cut_3d.mesh", "cube2_surface.mesh", 1, "facet_off_domain_boundary", 46)
     # A boundary vertex (2,0) of the 4x4 grid moved to (2,-1/256): the bottom segment is split
     # at a point off it.
     op, ot = kuhn_2d(4, 4)

@@ -326,6 +326,36 @@ inline std::optional<MutationSite> remove_boundary_element(io::MeshData& m, std:
   return site;
 }
 
+/// Cuts off the corner of a box-shaped mesh at (max x, min y[, min z]): removes the elements
+/// of the vertex there and the vertex itself (later vertices shift down by one). In a Kuhn
+/// grid every vertex of the new boundary facets is still on the box's boundary, but those
+/// facets cross the corner: they lie on no single side/face. Returns nullopt when no vertex
+/// sits exactly at that corner.
+inline std::optional<MutationSite> cut_box_corner(io::MeshData& m) {
+  const std::size_t d = static_cast<std::size_t>(m.dimension);
+  Point3 corner{-std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity(),
+                std::numeric_limits<double>::infinity()};
+  for (io::Index v = 0; v < m.point_count(); ++v) {
+    const Point3 p = point(m, v);
+    corner[0] = std::max(corner[0], p[0]);
+    for (std::size_t c = 1; c < d; ++c) corner[c] = std::min(corner[c], p[c]);
+  }
+  if (d == 2) corner[2] = 0;
+  io::Index cut = 0;
+  while (cut < m.point_count() && point(m, cut) != corner) ++cut;
+  if (cut == m.point_count()) return std::nullopt;
+  for (std::size_t e = element_count(m); e-- > 0;) {
+    const Simplex s = element(m, e);
+    if (std::find(s.begin(), s.end(), cut) != s.end()) remove_element(m, e);
+  }
+  m.coordinates.erase(m.coordinates.begin() + static_cast<std::ptrdiff_t>(cut * d),
+                      m.coordinates.begin() + static_cast<std::ptrdiff_t>((cut + 1) * d));
+  if (!m.point_labels.empty()) m.point_labels.erase(m.point_labels.begin() + static_cast<std::ptrdiff_t>(cut));
+  for (io::Index& v : element_array(m))
+    if (v > cut) --v;
+  return MutationSite{};
+}
+
 /// Removes an element with exactly one vertex on the boundary: the boundary then passes
 /// through that vertex twice (a pinch).
 inline std::optional<MutationSite> remove_element_pinching_boundary(io::MeshData& m, std::uint64_t choice) {
