@@ -6,6 +6,7 @@
 #include <cstdlib>
 #include <memory>
 #include <new>
+#include <stdexcept>
 #ifdef __linux__
 #include <sys/mman.h>
 #endif
@@ -113,6 +114,7 @@ void add_boundary(const MeshView& m, const Record& r, FacetSet& boundary) {
 
 Finding pair_facets(const MeshView& m, FacetSet& boundary, std::size_t& interior_facets) {
   const int k = m.corners();
+  if (m.element_count >= std::size_t{1} << 29) throw std::length_error("the certificate checks at most 2^29 - 1 elements");
   std::vector<std::size_t> start(m.vertex_count + 1, 0);
   for (std::size_t e = 0; e < m.element_count; ++e)
     for (int i = 0; i < k; ++i) ++start[facet_min(m.cell(e), k, i) + 1];

@@ -68,8 +68,13 @@ int run_check(const CheckOptions& options) {
     domain = read_or_report(options.domain);
     if (!domain) return 2;
   }
-  const certificate::Report report =
-      certificate::check_mesh(*mesh, domain ? &*domain : nullptr);
+  certificate::Report report;
+  try {  // bad geometry is a Finding; only a mesh too large to check, or memory, throws
+    report = certificate::check_mesh(*mesh, domain ? &*domain : nullptr);
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "error: %s: %s\n", options.mesh.c_str(), e.what());
+    return 2;
+  }
   print_statistics(report.statistics);
   if (report.valid) {
     std::printf("valid: %s\n", options.domain.empty()
