@@ -166,6 +166,58 @@ TEST(HandCases, BranchedDoubleCover3d) {
   EXPECT_EQ(r.finding.defect, Defect::boundary_intersection) << describe(r);
 }
 
+// Design decision 2 (points on input segments): the domain is the triangle (0,0), (3,0),
+// (0,1); the mesh splits its hypotenuse x + 3y = 3 at the roundings of the exact points
+// (2, 1/3) and (1, 2/3), which are not on it (1/3 has no double) but whose rounding boxes
+// meet it. Accepted, and reported as 3 vertices exactly on the boundary and 2 within half an
+// ulp. Moved 8 ulps further (beyond any rounding box: the box reaches 2^-55 in y and the
+// segment rises only 2^-52/3 across the box's x extent), the same vertex is off the domain.
+io::MeshData rounded_fan(double third_up) {
+  io::MeshData mesh;
+  mesh.dimension = 2;
+  mesh.coordinates = {0, 0, 3, 0, 2, third_up, 1, 2.0 / 3.0, 0, 1};
+  mesh.triangles = {0, 1, 2, 0, 2, 3, 0, 3, 4};
+  return mesh;
+}
+
+io::MeshData slanted_triangle_domain() {
+  io::MeshData d;
+  d.dimension = 2;
+  d.coordinates = {0, 0, 3, 0, 0, 1};
+  d.segments = {0, 1, 1, 2, 2, 0};
+  return d;
+}
+
+TEST(HandCases, SteinerPointsWithinTheirRoundingBoxAreOnTheSegment) {
+  const io::MeshData mesh = rounded_fan(1.0 / 3.0);
+  ASSERT_TRUE(all_elements_positive(mesh));
+  // The oracle confirms the two split vertices are not exactly on the hypotenuse.
+  for (io::Index v : {2u, 3u}) {
+    const fuzz::Point3 p = fuzz::point(mesh, v);
+    ASSERT_NE(oracle_orient2d(3, 0, 0, 1, p[0], p[1]), 0) << "vertex " << v;
+  }
+  const io::MeshData domain = slanted_triangle_domain();
+  const certificate::Report r = check_mesh(mesh, &domain);
+  ASSERT_TRUE(r.valid) << describe(r);
+  EXPECT_EQ(r.statistics.vertices_exactly_on_domain_boundary, 3u);
+  EXPECT_EQ(r.statistics.vertices_in_rounding_box_only, 2u);
+  EXPECT_GT(r.statistics.max_boundary_deviation, 0.0);
+  EXPECT_LT(r.statistics.max_boundary_deviation, 1e-15);
+}
+
+TEST(HandCases, SteinerPointBeyondItsRoundingBoxIsOffTheDomain) {
+  double y = 1.0 / 3.0;
+  for (int i = 0; i < 8; ++i) y = std::nextafter(y, 1.0);
+  const io::MeshData mesh = rounded_fan(y);
+  ASSERT_TRUE(all_elements_positive(mesh));
+  const io::MeshData domain = slanted_triangle_domain();
+  const certificate::Report r = check_mesh(mesh, &domain);
+  EXPECT_TRUE(r.finding.defect == Defect::vertex_off_domain_boundary ||
+              r.finding.defect == Defect::facet_off_domain_boundary)
+      << describe(r);
+  EXPECT_TRUE(check_mesh(mesh).valid);  // alone it is a valid mesh
+}
+
 // The certificate JSON is deterministic and names the verdict and the defect.
 TEST(HandCases, CertificateJsonIsDeterministic) {
   io::MeshData mesh = fuzz::kuhn_grid(grid(2, 3, 11));
