@@ -13,6 +13,7 @@
 #include "certimesh/io/format_error.h"
 #include "certimesh/io/mesh_file.h"
 #include "text_reader.h"
+#include "text_writer.h"
 
 namespace certimesh::io {
 
@@ -45,34 +46,6 @@ std::vector<Label>& labels_of(MeshData& mesh, std::size_t kind) {
 
 // ---------------------------------------------------------------------------------------------
 // Writing
-
-[[noreturn]] void refuse_mesh(const std::string& why) { throw FormatError("gmsh output", 0, why); }
-
-// A MeshData whose arrays disagree would produce a file no reader accepts: refuse it here.
-void validate_for_writing(const MeshData& mesh) {
-  if (mesh.dimension != 2 && mesh.dimension != 3) refuse_mesh("dimension must be 2 or 3");
-  const std::size_t points = mesh.point_count();
-  if (mesh.coordinates.size() != points * static_cast<std::size_t>(mesh.dimension)) {
-    refuse_mesh("coordinate count is not a multiple of the dimension");
-  }
-  for (double c : mesh.coordinates) {
-    if (!std::isfinite(c)) refuse_mesh("a coordinate is not finite");
-  }
-  if (!mesh.point_labels.empty() && mesh.point_labels.size() != points) {
-    refuse_mesh("point label count differs from the point count");
-  }
-  for (std::size_t kind = 0; kind < kKinds.size(); ++kind) {
-    const auto& cells = cells_of(mesh, kind);
-    const auto& labels = labels_of(mesh, kind);
-    if (cells.size() % kKinds[kind].arity != 0) refuse_mesh("cell array length is not a multiple of its arity");
-    if (!labels.empty() && labels.size() != cells.size() / kKinds[kind].arity) {
-      refuse_mesh("cell label count differs from the cell count");
-    }
-    for (Index v : cells) {
-      if (v >= points) refuse_mesh("a cell names vertex " + std::to_string(v) + " of " + std::to_string(points));
-    }
-  }
-}
 
 double coordinate(const MeshData& mesh, std::size_t point, std::size_t axis) {
   const auto d = static_cast<std::size_t>(mesh.dimension);
@@ -169,7 +142,10 @@ void append_nodes(std::string& out, const MeshData& mesh, std::pair<int, int> en
     return;
   }
   out += std::to_string(entity.first) + ' ' + std::to_string(entity.second) + " 0 " + std::to_string(n) + '\n';
-  for (std::size_t i = 0; i < n; ++i) out += std::to_string(i + 1) + '\n';
+  for (std::size_t i = 0; i < n; ++i) {
+    detail::append_integer(out, i + 1);
+    out += '\n';
+  }
   for (std::size_t i = 0; i < n; ++i) {
     for (std::size_t axis = 0; axis < 3; ++axis) {
       append_double(out, coordinate(mesh, i, axis));
@@ -194,8 +170,11 @@ void append_elements(std::string& out, const MeshData& mesh, const std::vector<E
     out += std::to_string(kind.dimension) + ' ' + std::to_string(e.tag) + ' ' + std::to_string(kind.gmsh_type) +
            ' ' + std::to_string(e.cells.size()) + '\n';
     for (std::size_t c : e.cells) {
-      out += std::to_string(first_tag[e.kind] + c + 1);
-      for (std::size_t k = 0; k < kind.arity; ++k) out += ' ' + std::to_string(std::size_t{cells[c * kind.arity + k]} + 1);
+      detail::append_integer(out, first_tag[e.kind] + c + 1);
+      for (std::size_t k = 0; k < kind.arity; ++k) {
+        out += ' ';
+        detail::append_integer(out, std::size_t{cells[c * kind.arity + k]} + 1);
+      }
       out += '\n';
     }
   }
@@ -206,7 +185,10 @@ void append_point_labels(std::string& out, const MeshData& mesh) {
   if (mesh.point_labels.empty()) return;
   out += "$NodeData\n1\n\"label\"\n1\n0\n3\n0\n1\n" + std::to_string(mesh.point_count()) + '\n';
   for (std::size_t i = 0; i < mesh.point_labels.size(); ++i) {
-    out += std::to_string(i + 1) + ' ' + std::to_string(mesh.point_labels[i]) + '\n';
+    detail::append_integer(out, i + 1);
+    out += ' ';
+    detail::append_integer(out, mesh.point_labels[i]);
+    out += '\n';
   }
   out += "$EndNodeData\n";
 }
@@ -540,8 +522,10 @@ MeshData parse_gmsh_format(std::string name, std::string contents) {
   return GmshReader(in).read();
 }
 
-std::string format_gmsh(const MeshData& mesh) {
-  validate_for_writing(mesh);
+namespace {
+
+std::string format_gmsh_named(const MeshData& mesh, const std::string& name) {
+  detail::check_writable(mesh, name);
   const std::vector<Entity> entities = group_into_entities(mesh);
   std::string out = "$MeshFormat\n4.1 0 8\n$EndMeshFormat\n";
   append_entities(out, mesh, entities);
@@ -551,8 +535,12 @@ std::string format_gmsh(const MeshData& mesh) {
   return out;
 }
 
+}  // namespace
+
+std::string format_gmsh(const MeshData& mesh) { return format_gmsh_named(mesh, "(.msh output)"); }
+
 void write_gmsh_format(const MeshData& mesh, const std::filesystem::path& path) {
-  write_file_atomically(path, format_gmsh(mesh));
+  write_file_atomically(path, format_gmsh_named(mesh, path.string()));
 }
 
 }  // namespace certimesh::io

@@ -9,7 +9,6 @@
 #include <fstream>
 #include <limits>
 #include <optional>
-#include <sstream>
 #include <type_traits>
 #include <string_view>
 #include <utility>
@@ -17,6 +16,7 @@
 
 #include "certimesh/io/format_error.h"
 #include "certimesh/io/mesh_file.h"
+#include "text_writer.h"
 
 namespace certimesh::io {
 
@@ -670,32 +670,6 @@ MeshData parse_vtu_text(const std::string& name, const std::string& contents) {
 // ---------------------------------------------------------------------------------------------
 // Writing
 
-[[noreturn]] void refuse_mesh(const std::string& why) { throw FormatError("vtu output", 0, why); }
-
-void validate_for_writing(const MeshData& mesh) {
-  if (mesh.dimension != 2 && mesh.dimension != 3) refuse_mesh("dimension must be 2 or 3");
-  const std::size_t points = mesh.point_count();
-  if (mesh.coordinates.size() != points * static_cast<std::size_t>(mesh.dimension)) {
-    refuse_mesh("coordinate count is not a multiple of the dimension");
-  }
-  for (double c : mesh.coordinates) {
-    if (!std::isfinite(c)) refuse_mesh("a coordinate is not finite");
-  }
-  if (!mesh.point_labels.empty() && mesh.point_labels.size() != points) refuse_mesh("point label count differs from the point count");
-  const std::array<std::pair<const std::vector<Index>*, const std::vector<Label>*>, 3> kinds{
-      {{&mesh.segments, &mesh.segment_labels}, {&mesh.triangles, &mesh.triangle_labels}, {&mesh.tetrahedra, &mesh.tetrahedron_labels}}};
-  for (std::size_t k = 0; k < kinds.size(); ++k) {
-    const std::size_t arity = k + 2;
-    if (kinds[k].first->size() % arity != 0) refuse_mesh("cell array length is not a multiple of its arity");
-    if (!kinds[k].second->empty() && kinds[k].second->size() != kinds[k].first->size() / arity) {
-      refuse_mesh("cell label count differs from the cell count");
-    }
-    for (Index v : *kinds[k].first) {
-      if (v >= points) refuse_mesh("a cell names vertex " + std::to_string(v) + " of " + std::to_string(points));
-    }
-  }
-}
-
 template <typename Values>
 void append_integer_array(std::string& out, const char* type, const char* name, const Values& values) {
   out += "        <DataArray type=\"";
@@ -704,7 +678,7 @@ void append_integer_array(std::string& out, const char* type, const char* name, 
   out += name;
   out += "\" format=\"ascii\">\n";
   for (std::size_t i = 0; i < values.size(); ++i) {
-    out += std::to_string(values[i]);
+    detail::append_integer(out, values[i]);
     out += (i % 16 == 15 || i + 1 == values.size()) ? '\n' : ' ';
   }
   out += "        </DataArray>\n";
@@ -756,18 +730,22 @@ std::size_t total_cells(const MeshData& mesh) {
 }  // namespace
 
 MeshData read_vtu_format(const std::filesystem::path& path) {
-  std::ifstream in(path, std::ios::binary);
+  std::ifstream in(path, std::ios::binary | std::ios::ate);
   if (!in) throw FormatError(path.string(), 0, "cannot open the file for reading");
-  std::ostringstream buffer;
-  buffer << in.rdbuf();
-  if (in.bad()) throw FormatError(path.string(), 0, "read error");
-  return parse_vtu_text(path.string(), buffer.str());
+  const std::streamoff size = in.tellg();
+  if (size < 0) throw FormatError(path.string(), 0, "cannot tell the file size");
+  std::string contents(static_cast<std::size_t>(size), '\0');
+  in.seekg(0);
+  if (!in.read(contents.data(), size)) throw FormatError(path.string(), 0, "read error");
+  return parse_vtu_text(path.string(), contents);
 }
 
 MeshData parse_vtu_format(std::string name, std::string contents) { return parse_vtu_text(name, contents); }
 
-std::string format_vtu(const MeshData& mesh) {
-  validate_for_writing(mesh);
+namespace {
+
+std::string format_vtu_named(const MeshData& mesh, const std::string& name) {
+  detail::check_writable(mesh, name);
   std::string out =
       "<?xml version=\"1.0\"?>\n"
       "<VTKFile type=\"UnstructuredGrid\" version=\"1.0\" byte_order=\"LittleEndian\">\n"
@@ -788,8 +766,12 @@ std::string format_vtu(const MeshData& mesh) {
   return out;
 }
 
+}  // namespace
+
+std::string format_vtu(const MeshData& mesh) { return format_vtu_named(mesh, "(.vtu output)"); }
+
 void write_vtu_format(const MeshData& mesh, const std::filesystem::path& path) {
-  write_file_atomically(path, format_vtu(mesh));
+  write_file_atomically(path, format_vtu_named(mesh, path.string()));
 }
 
 }  // namespace certimesh::io
