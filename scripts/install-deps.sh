@@ -16,6 +16,7 @@ packages=(
   time                                        # /usr/bin/time -v in the constant-memory test
   gmsh                                        # interop: Gmsh must read what certimesh writes
   libssl-dev                                  # SHA-256 of the mesh in the certificate
+  zlib1g-dev                                  # compressed .vtu (meshio's default) in io
 )
 
 missing=()

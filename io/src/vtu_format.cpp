@@ -1,5 +1,7 @@
 #include "certimesh/io/vtu_format.h"
 
+#include <zlib.h>
+
 #include <algorithm>
 #include <array>
 #include <charconv>
@@ -223,9 +225,11 @@ bool is_float(Scalar s) { return s == Scalar::float32 || s == Scalar::float64; }
 // What the file as a whole says about binary arrays.
 struct Encoding {
   bool little_endian = true;
-  bool compressed = false;
+  std::string compressor;        // empty: none; "vtkZLibDataCompressor" is the one supported
   std::size_t header_bytes = 4;  // UInt32 (VTK's default) or UInt64
 };
+
+constexpr std::string_view kZlib = "vtkZLibDataCompressor";
 
 int base64_value(char c) {
   if (c >= 'A' && c <= 'Z') return c - 'A';
@@ -240,18 +244,20 @@ class ArrayDecoder {
  public:
   ArrayDecoder(const std::string& file, const Encoding& encoding) : file_(file), encoding_(encoding) {}
 
-  /// The values of an integer DataArray (any integer type); `what` names it in errors.
-  std::vector<std::int64_t> integers(const XmlElement& array, std::string_view what) const {
+  /// The values of an integer DataArray (any integer type); `what` names it in errors. A
+  /// compressed array may declare at most `max_values` values (the most the caller can use),
+  /// so that a small hostile file cannot make the reader inflate gigabytes.
+  std::vector<std::int64_t> integers(const XmlElement& array, std::string_view what, std::size_t max_values) const {
     const Scalar scalar = scalar_type(array);
     if (is_float(scalar)) fail(array, std::string(what) + " must have an integer type, not " + *array.attribute("type"));
-    return is_binary(array) ? decode_binary<std::int64_t>(array, scalar) : parse_ascii<std::int64_t>(array);
+    return is_binary(array) ? decode_binary<std::int64_t>(array, scalar, max_values) : parse_ascii<std::int64_t>(array);
   }
 
-  /// The values of a Float32/Float64 DataArray.
-  std::vector<double> reals(const XmlElement& array, std::string_view what) const {
+  /// The values of a Float32/Float64 DataArray (`max_values` as for integers()).
+  std::vector<double> reals(const XmlElement& array, std::string_view what, std::size_t max_values) const {
     const Scalar scalar = scalar_type(array);
     if (!is_float(scalar)) fail(array, std::string(what) + " must have type Float32 or Float64, not " + *array.attribute("type"));
-    return is_binary(array) ? decode_binary<double>(array, scalar) : parse_ascii<double>(array);
+    return is_binary(array) ? decode_binary<double>(array, scalar, max_values) : parse_ascii<double>(array);
   }
 
   [[noreturn]] void fail(const XmlElement& e, const std::string& why) const { throw FormatError(file_, e.line, why); }
@@ -271,8 +277,9 @@ class ArrayDecoder {
     if (format == nullptr || *format == "ascii") return false;
     if (*format == "appended") fail(array, "appended data (format=\"appended\") is not supported; write ascii or inline binary");
     if (*format != "binary") fail(array, "DataArray format '" + *format + "' is not supported");
-    if (encoding_.compressed) {
-      fail(array, "compressed binary data is not supported; write with meshio binary=False or compression=None");
+    if (!encoding_.compressor.empty() && encoding_.compressor != kZlib) {
+      fail(array, "compressor '" + encoding_.compressor + "' is not supported (certimesh reads " + std::string(kZlib) +
+                      "); write with meshio compression=\"zlib\" or None");
     }
     if (!encoding_.little_endian) fail(array, "BigEndian binary data is not supported");
     return true;
@@ -377,9 +384,8 @@ class ArrayDecoder {
     return T{};
   }
 
-  template <typename T>
-  std::vector<T> decode_binary(const XmlElement& array, Scalar scalar) const {
-    const std::vector<unsigned char> bytes = decode_base64(array);
+  // The raw bytes of an uncompressed array: one header value (the byte count), then the data.
+  std::vector<unsigned char> uncompressed_payload(const XmlElement& array, std::vector<unsigned char> bytes) const {
     const std::size_t header = encoding_.header_bytes;
     if (bytes.size() < header) fail_at(array.text_line, "binary DataArray shorter than its header");
     const std::uint64_t declared = little_endian_unsigned(bytes.data(), header);
@@ -387,13 +393,62 @@ class ArrayDecoder {
       fail_at(array.text_line, "binary DataArray header declares " + std::to_string(declared) + " bytes, it holds " +
                                    std::to_string(bytes.size() - header));
     }
+    bytes.erase(bytes.begin() + static_cast<std::ptrdiff_t>(header + declared), bytes.end());
+    bytes.erase(bytes.begin(), bytes.begin() + static_cast<std::ptrdiff_t>(header));
+    return bytes;
+  }
+
+  // The raw bytes of a zlib-compressed array (VTK's layout): header values [number of blocks,
+  // block size, size of the last block (0: full), compressed size of each block], then the
+  // blocks, each one zlib stream. At most `max_bytes` are inflated.
+  std::vector<unsigned char> inflated_payload(const XmlElement& array, const std::vector<unsigned char>& bytes,
+                                              std::size_t max_bytes) const {
+    const std::size_t h = encoding_.header_bytes;
+    const auto header_value = [&](std::size_t i) { return little_endian_unsigned(bytes.data() + i * h, h); };
+    if (bytes.size() < 3 * h) fail_at(array.text_line, "compressed DataArray shorter than its header");
+    const std::uint64_t blocks = header_value(0);
+    const std::uint64_t block_size = header_value(1);
+    const std::uint64_t last_size = header_value(2);
+    if (blocks > bytes.size() / h - 3) fail_at(array.text_line, "compressed DataArray header declares " + std::to_string(blocks) + " blocks, more than it can hold");
+    if (last_size > block_size) fail_at(array.text_line, "compressed DataArray: last block larger than the block size");
+    // Only full blocks and the last one are inflated: bound them before multiplying.
+    const std::uint64_t last = last_size == 0 ? block_size : last_size;
+    if (blocks > 0 && (last > max_bytes || blocks - 1 > (max_bytes - last) / std::max<std::uint64_t>(block_size, 1))) {
+      fail_at(array.text_line, "compressed DataArray declares more data than the piece can use");
+    }
+    const std::uint64_t total = blocks == 0 ? 0 : (blocks - 1) * block_size + last;
+    if (total > max_bytes) fail_at(array.text_line, "compressed DataArray declares more data than the piece can use");
+    std::vector<unsigned char> out(static_cast<std::size_t>(total));
+    std::size_t offset = static_cast<std::size_t>(3 + blocks) * h;
+    std::size_t written = 0;
+    for (std::uint64_t b = 0; b < blocks; ++b) {
+      const std::uint64_t packed = header_value(static_cast<std::size_t>(3 + b));
+      if (packed > bytes.size() - offset) fail_at(array.text_line, "compressed DataArray truncated in block " + std::to_string(b));
+      const std::uint64_t expected = b + 1 == blocks && last_size != 0 ? last_size : block_size;
+      auto length = static_cast<uLongf>(expected);
+      const int status = uncompress(out.data() + written, &length, bytes.data() + offset, static_cast<uLong>(packed));
+      if (status != Z_OK || length != expected) {
+        fail_at(array.text_line, "compressed DataArray block " + std::to_string(b) + " is corrupt (zlib status " + std::to_string(status) + ")");
+      }
+      written += static_cast<std::size_t>(expected);
+      offset += static_cast<std::size_t>(packed);
+    }
+    return out;
+  }
+
+  template <typename T>
+  std::vector<T> decode_binary(const XmlElement& array, Scalar scalar, std::size_t max_values) const {
     const std::size_t width = size_of(scalar);
-    if (declared % width != 0) fail_at(array.text_line, "binary DataArray byte count is not a multiple of its type size");
+    const std::vector<unsigned char> payload =
+        encoding_.compressor.empty()
+            ? uncompressed_payload(array, decode_base64(array))
+            : inflated_payload(array, decode_base64(array), max_values > SIZE_MAX / width ? SIZE_MAX : max_values * width);
+    if (payload.size() % width != 0) fail_at(array.text_line, "binary DataArray byte count is not a multiple of its type size");
     std::vector<T> values;
-    values.reserve(static_cast<std::size_t>(declared) / width);
-    for (std::size_t offset = header; offset < header + declared; offset += width) {
-      if (scalar == Scalar::uint64 && bytes[offset + 7] >= 0x80) fail_at(array.text_line, "UInt64 value above 2^63");
-      const T value = convert<T>(bytes.data() + offset, scalar);
+    values.reserve(payload.size() / width);
+    for (std::size_t offset = 0; offset < payload.size(); offset += width) {
+      if (scalar == Scalar::uint64 && payload[offset + 7] >= 0x80) fail_at(array.text_line, "UInt64 value above 2^63");
+      const T value = convert<T>(payload.data() + offset, scalar);
       if constexpr (std::is_floating_point_v<T>) {
         if (!std::isfinite(value)) fail_at(array.text_line, "binary DataArray value is not finite");
       }
@@ -464,7 +519,8 @@ class VtuInterpreter {
     const std::string* header = root.attribute("header_type");
     if (header != nullptr && *header != "UInt32" && *header != "UInt64") fail(root, "header_type '" + *header + "' is not supported");
     encoding_.header_bytes = header != nullptr && *header == "UInt64" ? 8 : 4;
-    encoding_.compressed = root.attribute("compressor") != nullptr;
+    const std::string* compressor = root.attribute("compressor");
+    encoding_.compressor = compressor == nullptr ? std::string() : *compressor;
     for (const XmlElement& child : root.children) {
       if (child.name == "AppendedData") fail(child, "appended data is not supported; write ascii or inline binary");
     }
@@ -486,7 +542,7 @@ class VtuInterpreter {
     for (const XmlElement& array : field_data.children) {
       const std::string* name = array.attribute("Name");
       if (array.name != "DataArray" || name == nullptr || *name != "certimesh_dimension") continue;
-      const auto values = decoder.integers(array, "certimesh_dimension");
+      const auto values = decoder.integers(array, "certimesh_dimension", 1);
       if (values.size() != 1 || (values[0] != 2 && values[0] != 3)) fail(array, "certimesh_dimension must be one value, 2 or 3");
       dimension = static_cast<int>(values[0]);
     }
@@ -551,7 +607,7 @@ class VtuInterpreter {
     if (array == nullptr) fail(points_element, "<Points> has no DataArray");
     const std::string* components = array->attribute("NumberOfComponents");
     if (components == nullptr || *components != "3") fail(*array, "Points must have NumberOfComponents=\"3\"");
-    std::vector<double> xyz = decoder.reals(*array, "Points");
+    std::vector<double> xyz = decoder.reals(*array, "Points", 3 * points);
     if (xyz.size() != 3 * points) {
       fail(*array, "Points holds " + std::to_string(xyz.size()) + " values, NumberOfPoints " + std::to_string(points) +
                        " needs " + std::to_string(3 * points));
@@ -560,7 +616,7 @@ class VtuInterpreter {
   }
 
   std::vector<Label> read_labels(const ArrayDecoder& decoder, const XmlElement& array, std::size_t count) const {
-    const auto values = decoder.integers(array, "label");
+    const auto values = decoder.integers(array, "label", count);
     if (values.size() != count) {
       fail(array, "label holds " + std::to_string(values.size()) + " values, expected " + std::to_string(count));
     }
@@ -581,9 +637,9 @@ class VtuInterpreter {
     const XmlElement* offsets = find_array(cells_element, "offsets");
     const XmlElement* types = find_array(cells_element, "types");
     if (!connectivity || !offsets || !types) fail(cells_element, "<Cells> needs DataArrays connectivity, offsets and types");
-    const auto nodes = decoder.integers(*connectivity, "connectivity");
-    const auto ends = decoder.integers(*offsets, "offsets");
-    const auto kinds = decoder.integers(*types, "types");
+    const auto nodes = decoder.integers(*connectivity, "connectivity", 4 * cells);
+    const auto ends = decoder.integers(*offsets, "offsets", cells);
+    const auto kinds = decoder.integers(*types, "types", cells);
     if (ends.size() != cells) fail(*offsets, "offsets holds " + std::to_string(ends.size()) + " values, NumberOfCells is " + std::to_string(cells));
     if (kinds.size() != cells) fail(*types, "types holds " + std::to_string(kinds.size()) + " values, NumberOfCells is " + std::to_string(cells));
     std::int64_t begin = 0;

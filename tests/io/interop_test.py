@@ -379,6 +379,7 @@ def certimesh_reads_meshio(certimesh, work):
         ("gmsh", "m.msh", {"file_format": "gmsh", "binary": False}),
         ("vtu", "m_ascii.vtu", {"binary": False}),
         ("vtu", "m_binary.vtu", {"binary": True, "compression": None}),
+        ("vtu", "m_zlib.vtu", {}),  # meshio's default: binary, zlib-compressed
         ("medit", "m.mesh", {}),
         ("tetgen", "m.node", {}),
     ]

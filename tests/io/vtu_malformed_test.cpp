@@ -62,6 +62,12 @@ struct MalformedCase {
 
 const std::string kConnectivity = "Name=\"connectivity\" format=\"ascii\">\n0 1 2";
 
+// The valid file with a zlib compressor and the connectivity as this base64 text.
+std::string zlib_connectivity(const std::string& base64) {
+  std::string text = changed(kConnectivity, "Name=\"connectivity\" format=\"binary\">\n" + base64);
+  return text.replace(text.find("byte_order"), 0, "compressor=\"vtkZLibDataCompressor\" ");
+}
+
 std::vector<MalformedCase> cases() {
   return {
       {"empty file", "", 1, "no XML element"},
@@ -85,10 +91,15 @@ std::vector<MalformedCase> cases() {
       {"offsets count", changed(">\n3\n", ">\n3 3\n"), 16, "offsets holds 2 values"},
       {"cell size vs type", changed(">\n5\n", ">\n10\n"), 19, "has 3 vertices"},
       {"mismatched close tag", changed("</Points>", "</Cells>"), 11, "</Cells> closes <Points> of line 5"},
-      {"compressed binary",
-       changed(kConnectivity, "Name=\"connectivity\" format=\"binary\">\nAAAA").replace(
-           kValid.find("byte_order"), 0, "compressor=\"vtkZLibDataCompressor\" "),
-       13, "compressed binary data is not supported"},
+      {"unsupported compressor", [] {
+         std::string t = zlib_connectivity("AAAA");
+         return t.replace(t.find("vtkZLibDataCompressor"), 21, "vtkLZ4DataCompressor");
+       }(),
+       13, "compressor 'vtkLZ4DataCompressor' is not supported"},
+      {"zlib header truncated", zlib_connectivity("AAAA"), 14, "shorter than its header"},
+      {"zlib block corrupt", zlib_connectivity("AQAAABgAAAAAAAAABAAAAGFiY2Q="), 14, "block 0 is corrupt"},
+      {"zlib bomb declared", zlib_connectivity("AQAAAAAAAIAAAAAABAAAAGFiY2Q="), 14, "more data than the piece can use"},
+      {"zlib block missing", zlib_connectivity("AQAAABgAAAAAAAAAEAAAAA=="), 14, "truncated in block 0"},
       {"appended data", changed("Name=\"connectivity\" format=\"ascii\"", "Name=\"connectivity\" format=\"appended\" offset=\"0\""),
        13, "appended"},
       {"bad base64", changed(kConnectivity, "Name=\"connectivity\" format=\"binary\">\n!!!!"), 14, "malformed base64"},
@@ -141,6 +152,12 @@ TEST(VtuMalformed, TheValidBaseIsValid) {
   EXPECT_EQ(m.coordinates, (std::vector<double>{0, 0, 1, 0, 0, 1}));
   EXPECT_EQ(m.triangles, (std::vector<io::Index>{0, 1, 2}));
   EXPECT_EQ(m.triangle_labels, (std::vector<io::Label>{2}));
+}
+
+TEST(VtuMalformed, TheZlibBaseIsValid) {
+  // Python: header struct.pack('<4I', 1, 24, 0, len(c)) + c = zlib.compress of Int64 0 1 2.
+  const io::MeshData m = io::parse_vtu_format("good.vtu", zlib_connectivity("AQAAABgAAAAAAAAAEAAAAA==eJxjYIAARijNBKUBADgABA=="));
+  EXPECT_EQ(m.triangles, (std::vector<io::Index>{0, 1, 2}));
 }
 
 TEST(VtuMalformed, EveryPrefixIsRefusedOrTheWholeMesh) {

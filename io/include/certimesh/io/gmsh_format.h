@@ -1,7 +1,8 @@
 // Gmsh .msh version 4.1 ASCII ($MeshFormat, $Entities, $Nodes, $Elements; labels as physical
 // tags of entities).
 //
-// Writing (`4.1 0 8`):
+// Writing (`4.1 0 8`; a 2D mesh with tetrahedra is refused; holes and region points, which only
+// .poly holds, are not written):
 //  - every (dimension, label) pair of the mesh's cells becomes one entity (curve, surface or
 //    volume) whose only physical tag is the label, label 0 included (physical tag 0). Why 0 is
 //    written rather than left out: Gmsh saves only elements of physical groups (unless

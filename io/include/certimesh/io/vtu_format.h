@@ -1,6 +1,7 @@
 // VTK .vtu: XML UnstructuredGrid; labels as the CellData / PointData arrays "label".
 //
-// Writing (ASCII DataArrays only, `version="1.0" byte_order="LittleEndian"`):
+// Writing (ASCII DataArrays only, `version="1.0" byte_order="LittleEndian"`; a 2D mesh with
+// tetrahedra is refused; holes and region points, which only .poly holds, are not written):
 //  - FieldData Int32 "certimesh_dimension" (2 or 3), so that a 2D mesh and a planar 3D surface
 //    mesh both round-trip;
 //  - Points: Float64, 3 components (z = 0 in 2D), shortest round-trip decimals;
@@ -12,10 +13,11 @@
 //
 // Reading: one <UnstructuredGrid> with one <Piece>, version 0.1 or 1.0. DataArrays may be
 // `format="ascii"` or `format="binary"` (inline base64, header_type UInt32 or UInt64,
-// LittleEndian, uncompressed; with or without a separate base64 block for the header).
-// Compressed files (a `compressor` attribute, meshio's default) and appended data are refused:
-// write them with meshio `binary=False` or `compression=None`. Cell types 3, 5, 10 are read,
-// type 1 (vertex) is skipped, any other type is refused naming the line of the types array.
+// LittleEndian; uncompressed, with or without a separate base64 block for the header, or
+// compressed by `vtkZLibDataCompressor`, meshio's default, inflated with zlib no further than
+// the piece's counts can use). Other compressors (LZ4, LZMA) and appended data are refused:
+// write them with meshio `binary=False`, `compression=None` or "zlib". Cell types 3, 5, 10 are
+// read, type 1 (vertex) is skipped, any other type is refused naming the line of the types array.
 // Cells of each kind keep their file order. Labels come from the CellData / PointData arrays
 // named "label" (integer types); other arrays are ignored. A cell kind whose labels are all 0
 // reads with an empty label vector (MeshData: "empty = all 0"). Dimension: the FieldData

@@ -42,3 +42,6 @@ with open("vtk_style_binary_uint64.vtu", "w") as f:
             + data_array("Int32", "offsets", np.array([3, 7], dtype="<i4"))
             + data_array("UInt8", "types", np.array([5, 10], dtype="u1"))
             + '</Cells>\n</Piece>\n</UnstructuredGrid>\n</VTKFile>\n')
+
+# A compressor certimesh does not read (LZMA), for the refusal test.
+meshio.write("meshio_binary_lzma.vtu", mesh, compression="lzma")
