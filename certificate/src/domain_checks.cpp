@@ -18,6 +18,8 @@ namespace {
 using Q = mpq_class;
 using Vec = std::array<Q, 3>;
 
+using Edge = std::pair<Index, Index>;
+
 struct Domain {
   MeshView geo;     // coordinates only
   FacetSet facets;  // segments (2D) or triangles (3D), domain vertex ids
@@ -90,6 +92,14 @@ Finding load_domain(const io::MeshData& data, int dim, Domain& d) {
     const bool flat = dim == 2 ? p[0] == p[1] : cross(minus(p[1], p[0]), minus(p[2], p[0])) == Vec{0, 0, 0};
     if (flat) return invalid("facet " + std::to_string(f) + " is degenerate", static_cast<std::int64_t>(f));
   }
+  std::vector<Edge> edges;  // 3D: a closed surface, every edge in exactly two triangles
+  for (std::size_t f = 0; dim == 3 && f < d.facets.size(); ++f)
+    for (int i = 0; i < 3; ++i) edges.push_back(std::minmax(d.facets.facet(f)[i], d.facets.facet(f)[(i + 1) % 3]));
+  std::sort(edges.begin(), edges.end());
+  for (std::size_t i = 0, j = 0; i < edges.size(); i = j) {
+    while (j < edges.size() && edges[j] == edges[i]) ++j;
+    if (j - i != 2) return invalid("is not a closed surface: edge (" + std::to_string(edges[i].first) + ", " + std::to_string(edges[i].second) + ") is in " + std::to_string(j - i) + " triangle(s)");
+  }
   Finding c = first_contact(d.geo, d.facets, Defect::invalid_domain, Defect::invalid_domain, "domain facet");
   if (c.defect != Defect::none) c.message = "the domain is not simple: " + c.message;
   return c;
@@ -132,30 +142,34 @@ double deviation(const MeshView& m, Index v, const Domain& d, std::size_t f) {
   return std::abs(dot.get_d()) / std::sqrt(Q(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]).get_d());
 }
 
-// facet_off_domain_boundary (a facet whose vertices are all on the domain boundary but on no
-// common domain facet), then vertex_off_domain_boundary; `home` gets each facet's domain facet.
-Finding boundary_on_domain(const MeshView& m, const FacetSet& b, const Domain& d, std::vector<std::uint32_t>& home,
-                           Statistics& stats) {
-  std::vector<Index> verts(b.vertices);
-  std::sort(verts.begin(), verts.end());
-  verts.erase(std::unique(verts.begin(), verts.end()), verts.end());
-  const std::vector<OnFacet> on = incidences(m, verts, d);
-  auto range = [&](Index v) {
+// Incidences of every mesh vertex, and the first domain facet all of `count` vertices are on.
+struct OnDomain {
+  std::vector<OnFacet> on;
+  auto range(Index v) const {
     return std::equal_range(on.begin(), on.end(), OnFacet{v, 0, false}, [](const OnFacet& x, const OnFacet& y) { return x.vertex < y.vertex; });
-  };
-  home.assign(b.size(), UINT32_MAX);
+  }
+  std::uint32_t common(const Index* x, int count) const {
+    for (auto it = range(x[0]).first; it != range(x[0]).second; ++it)
+      if (std::all_of(x + 1, x + count, [&](Index v) { auto r = range(v); return std::binary_search(r.first, r.second, OnFacet{v, it->facet, false}); }))
+        return it->facet;
+    return UINT32_MAX;
+  }
+};
+
+// facet_off_domain_boundary (a facet whose vertices are all on the domain boundary but on no
+// common domain facet), then vertex_off_domain_boundary, for the mesh boundary.
+Finding boundary_on_domain(const MeshView& m, const FacetSet& b, const Domain& d, const OnDomain& on, Statistics& stats) {
   for (std::size_t f = 0; f < b.size(); ++f) {
     const Index* x = b.facet(f);
-    if (std::any_of(x, x + m.dim, [&](Index v) { return range(v).first == range(v).second; })) continue;
-    for (auto it = range(x[0]).first; it != range(x[0]).second && home[f] == UINT32_MAX; ++it)
-      if (std::all_of(x + 1, x + m.dim, [&](Index v) { auto r = range(v); return std::binary_search(r.first, r.second, OnFacet{v, it->facet, false}); }))
-        home[f] = it->facet;
-    if (home[f] == UINT32_MAX)
+    if (std::none_of(x, x + m.dim, [&](Index v) { return on.range(v).first == on.range(v).second; }) && on.common(x, m.dim) == UINT32_MAX)
       return finding(Defect::facet_off_domain_boundary, b.owner[f], -1, x[0],
                      "boundary facet " + std::to_string(f) + " of element " + std::to_string(b.owner[f]) + " lies on no single domain facet");
   }
+  std::vector<Index> verts(b.vertices);
+  std::sort(verts.begin(), verts.end());
+  verts.erase(std::unique(verts.begin(), verts.end()), verts.end());
   for (Index v : verts) {
-    const auto r = range(v);
+    const auto r = on.range(v);
     if (r.first == r.second)
       return finding(Defect::vertex_off_domain_boundary, -1, -1, v, "boundary vertex " + std::to_string(v) + " is on no domain facet, not even within half an ulp");
     if (std::any_of(r.first, r.second, [](const OnFacet& o) { return o.exact; })) { ++stats.vertices_exactly_on_domain_boundary; continue; }
@@ -165,18 +179,13 @@ Finding boundary_on_domain(const MeshView& m, const FacetSet& b, const Domain& d
   return {};
 }
 
-using Edge = std::pair<Index, Index>;
-
-// Mesh edges both ways, sorted: all element edges in 2D (an internal constraint is covered by
-// interior edges), the boundary edges in 3D.
-std::vector<Edge> mesh_edges(const MeshView& m, const FacetSet& b) {
+// Mesh edges both ways, sorted (interior edges included: they cover internal constraints).
+std::vector<Edge> mesh_edges(const MeshView& m) {
   std::vector<Edge> e;
-  const std::size_t cells = m.dim == 2 ? m.element_count : b.size();
-  for (std::size_t c = 0; c < cells; ++c)
-    for (int i = 0; i < 3; ++i) {
-      const Index* x = m.dim == 2 ? m.cell(c) : b.facet(c);
-      e.push_back({x[i], x[(i + 1) % 3]}), e.push_back({x[(i + 1) % 3], x[i]});
-    }
+  for (std::size_t c = 0; c < m.element_count; ++c)
+    for (int i = 0; i < m.corners(); ++i)
+      for (int j = 0; j < m.corners(); ++j)
+        if (i != j) e.push_back({m.cell(c)[i], m.cell(c)[j]});
   std::sort(e.begin(), e.end());
   e.erase(std::unique(e.begin(), e.end()), e.end());
   return e;
@@ -187,7 +196,7 @@ std::int64_t find_vertex(const MeshView& m, const std::vector<Index>& lex, const
   const auto it = std::lower_bound(lex.begin(), lex.end(), p, [&](Index v, const double* q) {
     return std::lexicographical_compare(m.xyz + static_cast<std::size_t>(v) * m.dim, m.xyz + (static_cast<std::size_t>(v) + 1) * m.dim, q, q + m.dim);
   });
-  return it != lex.end() && std::equal(p, p + m.dim, m.xyz + static_cast<std::size_t>(*it) * m.dim) ? *it : -1;
+  return it != lex.end() && std::equal(p, p + m.dim, m.xyz + static_cast<std::size_t>(*it) * m.dim) ? static_cast<std::int64_t>(*it) : -1;
 }
 
 // From the mesh vertex at domain point a to the one at b along mesh edges whose ends are on
@@ -217,14 +226,19 @@ bool walk(const MeshView& m, const std::vector<Edge>& edges, const std::vector<I
 }
 
 // Every domain facet covered: its edges by chains of mesh edges (walk), and in 3D its area by
-// the boundary facets on it, whose mod-2 boundary must be exactly those chains: a 2-chain
-// with that boundary covers the face an odd number of times, and embedded facets cover once.
-Finding coverage(const MeshView& m, const FacetSet& b, const Domain& d, const std::vector<Index>& lex,
-                 const std::vector<std::uint32_t>& home) {
-  const std::vector<Edge> edges = mesh_edges(m, b);
-  std::vector<std::pair<std::uint32_t, std::size_t>> on_face;  // (domain facet, boundary facet)
-  for (std::size_t g = 0; g < b.size(); ++g) on_face.push_back({home[g], g});
+// the mesh facets on it, whose mod-2 boundary must be exactly those chains: a 2-chain with
+// that boundary covers the face an odd number of times, and non-overlapping facets cover once.
+Finding coverage(const MeshView& m, const Domain& d, const std::vector<Index>& lex, const OnDomain& on) {
+  const std::vector<Edge> edges = mesh_edges(m);
+  std::vector<std::pair<std::uint32_t, std::array<Index, 3>>> on_face;  // (domain facet, mesh facet), once each
+  for (std::size_t e = 0; m.dim == 3 && e < m.element_count; ++e)
+    for (int i = 0; i < 4; ++i) {
+      std::array<Index, 3> x{m.cell(e)[(i + 1) % 4], m.cell(e)[(i + 2) % 4], m.cell(e)[(i + 3) % 4]};
+      std::sort(x.begin(), x.end());
+      if (const std::uint32_t home = on.common(x.data(), 3); home != UINT32_MAX) on_face.push_back({home, x});
+    }
   std::sort(on_face.begin(), on_face.end());
+  on_face.erase(std::unique(on_face.begin(), on_face.end()), on_face.end());
   auto next = on_face.begin();
   for (std::size_t f = 0; f < d.facets.size(); ++f) {
     const Index* x = d.facets.facet(f);
@@ -236,7 +250,7 @@ Finding coverage(const MeshView& m, const FacetSet& b, const Domain& d, const st
                            std::to_string(x[(i + 1) % m.dim]) + " is not covered by mesh edges on it");
     if (m.dim == 2) continue;
     for (; next != on_face.end() && next->first == f; ++next)
-      for (int i = 0; i < 3; ++i) edges_on_face.push_back(std::minmax(b.facet(next->second)[i], b.facet(next->second)[(i + 1) % 3]));
+      for (int i = 0; i < 3; ++i) edges_on_face.push_back(std::minmax(next->second[i], next->second[(i + 1) % 3]));
     std::sort(edges_on_face.begin(), edges_on_face.end());
     for (std::size_t i = 0, j = 0; i < edges_on_face.size(); i = j) {
       while (j < edges_on_face.size() && edges_on_face[j] == edges_on_face[i]) ++j;
@@ -289,9 +303,12 @@ Finding check_domain(const MeshView& m, const FacetSet& boundary, const Componen
                      const std::vector<Index>& lex_order, const io::MeshData& domain, Statistics& stats) {
   Domain d;
   Finding f = load_domain(domain, m.dim, d);
-  std::vector<std::uint32_t> home;
-  if (f.defect == Defect::none) f = boundary_on_domain(m, boundary, d, home, stats);
-  if (f.defect == Defect::none) f = coverage(m, boundary, d, lex_order, home);
+  if (f.defect != Defect::none) return f;
+  std::vector<Index> all(m.vertex_count);
+  std::iota(all.begin(), all.end(), Index{0});
+  const OnDomain on{incidences(m, all, d)};
+  f = boundary_on_domain(m, boundary, d, on, stats);
+  if (f.defect == Defect::none) f = coverage(m, d, lex_order, on);
   if (f.defect == Defect::none) f = holes_and_regions(m, boundary, comps, domain);
   return f;
 }
