@@ -24,7 +24,7 @@ fuzz::MutationSite mutate(io::MeshData& mesh, Mutation&& mutation) {
 }
 
 void inverted_element(int dim) {
-  DrawnGrid g = draw_grid(dim);
+  DrawnGrid g = draw_grid(dim, true, true);
   const std::uint64_t c = draw_choice();
   mutate(g.mesh, [&](io::MeshData& m) { return fuzz::invert_element(m, c); });
   RC_PRE(!has_coincident_vertices(g.mesh));
@@ -36,7 +36,7 @@ void inverted_element(int dim) {
 }
 
 void flat_element(int dim) {
-  DrawnGrid g = draw_grid(dim);
+  DrawnGrid g = draw_grid(dim, true, true);
   const std::uint64_t c = draw_choice();
   const fuzz::MutationSite site = mutate(g.mesh, [&](io::MeshData& m) { return fuzz::flatten_element(m, c); });
   RC_PRE(!has_coincident_vertices(g.mesh));
@@ -47,7 +47,7 @@ void flat_element(int dim) {
 }
 
 void t_junction(int dim) {
-  DrawnGrid g = draw_grid(dim);
+  DrawnGrid g = draw_grid(dim, true, true);
   const std::uint64_t c = draw_choice();
   const fuzz::MutationSite site = mutate(g.mesh, [&](io::MeshData& m) { return fuzz::split_facet_one_side(m, c); });
   RC_ASSERT(all_elements_positive(g.mesh));
@@ -55,7 +55,7 @@ void t_junction(int dim) {
 }
 
 void overlapping_element(int dim) {
-  DrawnGrid g = draw_grid(dim);
+  DrawnGrid g = draw_grid(dim, true, true);
   const std::uint64_t c = draw_choice();
   mutate(g.mesh, [&](io::MeshData& m) { return fuzz::add_element_inside(m, c); });
   RC_ASSERT(all_elements_positive(g.mesh));
@@ -65,6 +65,7 @@ void overlapping_element(int dim) {
 }
 
 void double_cover(int dim) {
+  // No hole: the half-size copy would cross the hole's boundary (a boundary intersection).
   DrawnGrid g = draw_grid(dim);
   fuzz::add_scaled_copy(g.mesh);
   RC_ASSERT(all_elements_positive(g.mesh));
@@ -74,7 +75,7 @@ void double_cover(int dim) {
 }
 
 void missing_element(int dim) {
-  DrawnGrid g = draw_grid(dim);
+  DrawnGrid g = draw_grid(dim, true, true);
   const std::uint64_t c = draw_choice();
   const fuzz::MutationSite site = mutate(g.mesh, [&](io::MeshData& m) { return fuzz::remove_interior_element(m, c); });
   // Alone, a mesh with a cavity is a valid mesh of the region its boundary encloses.
@@ -85,7 +86,7 @@ void missing_element(int dim) {
 }
 
 void corner_cut(int dim) {
-  DrawnGrid g = draw_grid(dim);
+  DrawnGrid g = draw_grid(dim, true, true);
   RC_ASSERT(fuzz::cut_box_corner(g.mesh).has_value());
   expect_accepted(g.mesh, nullptr);
   // Every boundary vertex is still on the domain boundary; the new facets are not.
@@ -93,7 +94,7 @@ void corner_cut(int dim) {
 }
 
 void duplicated_element(int dim) {
-  DrawnGrid g = draw_grid(dim);
+  DrawnGrid g = draw_grid(dim, true, true);
   const std::uint64_t c = draw_choice();
   const std::uint64_t perm = draw_choice();
   const fuzz::MutationSite site = mutate(g.mesh, [&](io::MeshData& m) { return fuzz::duplicate_element(m, c, perm); });
@@ -101,7 +102,7 @@ void duplicated_element(int dim) {
 }
 
 void boundary_vertex_off_domain(int dim) {
-  DrawnGrid g = draw_grid(dim);
+  DrawnGrid g = draw_grid(dim, true, true);
   const std::uint64_t c = draw_choice();
   const bool outward = *rc::gen::arbitrary<bool>();
   const fuzz::MutationSite site =
@@ -117,7 +118,7 @@ void boundary_vertex_off_domain(int dim) {
 }
 
 void boundary_element_removed(int dim) {
-  DrawnGrid g = draw_grid(dim);
+  DrawnGrid g = draw_grid(dim, true, true);
   const std::uint64_t c = draw_choice();
   const fuzz::MutationSite site = mutate(g.mesh, [&](io::MeshData& m) { return fuzz::remove_boundary_element(m, c); });
   expect_accepted(g.mesh, nullptr);
@@ -126,7 +127,7 @@ void boundary_element_removed(int dim) {
 }
 
 void pinched_boundary(int dim) {
-  DrawnGrid g = draw_grid(dim);
+  DrawnGrid g = draw_grid(dim, true, true);
   const std::uint64_t c = draw_choice();
   const fuzz::MutationSite site =
       mutate(g.mesh, [&](io::MeshData& m) { return fuzz::remove_element_pinching_boundary(m, c); });
@@ -134,7 +135,7 @@ void pinched_boundary(int dim) {
 }
 
 void non_manifold_facet(int dim) {
-  DrawnGrid g = draw_grid(dim);
+  DrawnGrid g = draw_grid(dim, true, true);
   const std::uint64_t c = draw_choice();
   const fuzz::MutationSite site = mutate(g.mesh, [&](io::MeshData& m) { return fuzz::add_third_element_on_facet(m, c); });
   RC_PRE(!has_coincident_vertices(g.mesh));
@@ -142,20 +143,20 @@ void non_manifold_facet(int dim) {
 }
 
 void mixed_orientation(int dim) {
-  DrawnGrid g = draw_grid(dim);
+  DrawnGrid g = draw_grid(dim, true, true);
   const std::uint64_t c = draw_choice();
   const fuzz::MutationSite site = mutate(g.mesh, [&](io::MeshData& m) { return fuzz::swap_two_vertices(m, c); });
   expect_rejected(g.mesh, nullptr, Defect::inconsistent_orientation, &site);
 }
 
 void unused_vertex(int dim) {
-  DrawnGrid g = draw_grid(dim);
+  DrawnGrid g = draw_grid(dim, true, true);
   const fuzz::MutationSite site = fuzz::add_unused_vertex(g.mesh);
   expect_rejected(g.mesh, nullptr, Defect::unused_vertex, &site);
 }
 
 void duplicate_vertex(int dim) {
-  DrawnGrid g = draw_grid(dim);
+  DrawnGrid g = draw_grid(dim, true, true);
   const std::uint64_t c = draw_choice();
   const fuzz::MutationSite site = mutate(g.mesh, [&](io::MeshData& m) { return fuzz::add_duplicate_vertex(m, c); });
   const fuzz::MutationSite vertices_only{{}, site.vertices};
@@ -163,21 +164,21 @@ void duplicate_vertex(int dim) {
 }
 
 void repeated_vertex(int dim) {
-  DrawnGrid g = draw_grid(dim);
+  DrawnGrid g = draw_grid(dim, true, true);
   const std::uint64_t c = draw_choice();
   const fuzz::MutationSite site = mutate(g.mesh, [&](io::MeshData& m) { return fuzz::repeat_vertex_in_element(m, c); });
   expect_rejected(g.mesh, nullptr, Defect::repeated_vertex, &site);
 }
 
 void index_out_of_range(int dim) {
-  DrawnGrid g = draw_grid(dim);
+  DrawnGrid g = draw_grid(dim, true, true);
   const std::uint64_t c = draw_choice();
   const fuzz::MutationSite site = mutate(g.mesh, [&](io::MeshData& m) { return fuzz::index_out_of_range(m, c); });
   expect_rejected(g.mesh, nullptr, Defect::index_out_of_range, &site);
 }
 
 void non_finite_coordinate(int dim) {
-  DrawnGrid g = draw_grid(dim);
+  DrawnGrid g = draw_grid(dim, true, true);
   const fuzz::MutationSite site = fuzz::make_coordinate_non_finite(g.mesh, draw_choice());
   expect_rejected(g.mesh, nullptr, Defect::non_finite_coordinate, &site);
 }

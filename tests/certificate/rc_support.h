@@ -34,20 +34,33 @@ struct DrawnGrid {
 };
 
 /// A Kuhn grid: 2D 3..8 x 3..8 cells, 3D n^3 cells with n in 3..4 (cubes, so that the cube
-/// domain's face diagonals follow the grid's), jittered unless `jitter` is false. Its
-/// orientation is confirmed with the oracle before use.
-inline DrawnGrid draw_grid(int dimension, bool jitter = true) {
+/// domain's face diagonals follow the grid's), jittered unless `jitter` is false, and, when
+/// `allow_hole` and a coin says so, without the block [2, n-2) per axis (its domain then
+/// has that block's boundary, inward, and a hole point at its centre). Its orientation is
+/// confirmed with the oracle before use.
+inline DrawnGrid draw_grid(int dimension, bool jitter = true, bool allow_hole = false) {
   DrawnGrid g;
   g.spec.dimension = dimension;
+  // With a hole, at least 5 cells per axis and the block [2, n-2): a ring two cells wide,
+  // so that some vertices touch neither boundary (most mutations need one).
+  const bool hole = allow_hole && *rc::gen::arbitrary<bool>();
+  const int least = hole ? 5 : 3;
   if (dimension == 2) {
-    g.spec.cells = {*rc::gen::inRange(3, 9), *rc::gen::inRange(3, 9), 1};
+    g.spec.cells = {*rc::gen::inRange(least, 9), *rc::gen::inRange(least, 9), 1};
   } else {
-    const int n = *rc::gen::inRange(3, 5);
+    const int n = hole ? 5 : *rc::gen::inRange(3, 5);
     g.spec.cells = {n, n, n};
   }
   g.spec.jitter_seed = jitter ? *rc::gen::inRange<std::uint64_t>(1, 1u << 30) : 0;
+  const int n = g.spec.cells[0];
+  if (hole && dimension == 2) g.spec.hole = fuzz::cell_block_2d(2, 2, n - 2, g.spec.cells[1] - 2);
+  if (hole && dimension == 3) g.spec.hole = {{2, 2, 2}, {n - 2, n - 2, n - 2}};
   g.mesh = fuzz::kuhn_grid(g.spec);
-  g.domain = dimension == 2 ? fuzz::square_domain(g.spec) : fuzz::cube_surface_domain(g.spec.cells[0]);
+  g.domain = dimension == 2 ? fuzz::square_domain(g.spec) : fuzz::cube_surface_domain(n);
+  if (hole && dimension == 3) {
+    fuzz::append_box_surface(g.domain, 2, n - 2, true);
+    g.domain.holes = {n / 2.0, n / 2.0, n / 2.0};
+  }
   RC_ASSERT(all_elements_positive(g.mesh));
   return g;
 }
