@@ -53,12 +53,9 @@ namespace {
 void quoted(std::string& out, const std::string& text) {
   out += '"';
   for (char c : text) {
-    if (c == '"' || c == '\\') out += '\\', out += c;
-    else if (static_cast<unsigned char>(c) < 0x20) {
-      char esc[8];
-      std::snprintf(esc, sizeof esc, "\\u%04x", static_cast<unsigned>(c));
-      out += esc;
-    } else out += c;
+    char esc[8] = {c, 0};  // control characters as \u00XX, quote and backslash escaped
+    if (static_cast<unsigned char>(c) < 0x20) std::snprintf(esc, sizeof esc, "\\u%04x", static_cast<unsigned>(c));
+    out += std::string(c == '"' || c == '\\' ? "\\" : "") + esc;
   }
   out += '"';
 }

@@ -23,12 +23,6 @@ bool boxes_overlap(const Box& a, const Box& b, int dim) {
   return true;
 }
 
-bool box_contains(const Box& b, const MeshView& m, Index v) {
-  for (int k = 0; k < m.dim; ++k)
-    if (m.coord(v, k) < b.lo[k] || m.coord(v, k) > b.hi[k]) return false;
-  return true;
-}
-
 void BoxGrid::range(const Box& b, int first[3], int last[3]) const {
   for (int k = 0; k < 3; ++k) first[k] = last[k] = 0;
   for (int k = 0; k < dim_; ++k) first[k] = cell(b.lo[k], k), last[k] = cell(b.hi[k], k);

@@ -47,7 +47,6 @@ struct Box {
 
 Box facet_box(const MeshView& m, const Index* f, int count);
 bool boxes_overlap(const Box& a, const Box& b, int dim);
-bool box_contains(const Box& b, const MeshView& m, Index v);
 
 inline Finding finding(Defect defect, std::int64_t element, std::int64_t other, std::int64_t vertex, std::string why) {
   return Finding{defect, element, other, vertex, std::move(why)};

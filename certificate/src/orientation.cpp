@@ -11,17 +11,15 @@
 namespace certimesh::certificate::detail {
 namespace {
 
-double length(const MeshView& m, Index a, Index b) {
-  double s = 0;
-  for (int k = 0; k < m.dim; ++k) s += (m.coord(a, k) - m.coord(b, k)) * (m.coord(a, k) - m.coord(b, k));
-  return std::sqrt(s);
-}
-
 // 12√3·|S|/P² (triangle) or 6⁴√2·|V|/P³ (tetrahedron), P the sum of the edge lengths.
 double quality(const MeshView& m, const Index* c) {
   double perimeter = 0;
   for (int i = 0; i <= m.dim; ++i)
-    for (int j = i + 1; j <= m.dim; ++j) perimeter += length(m, c[i], c[j]);
+    for (int j = i + 1; j <= m.dim; ++j) {
+      double s = 0;
+      for (int k = 0; k < m.dim; ++k) s += (m.coord(c[i], k) - m.coord(c[j], k)) * (m.coord(c[i], k) - m.coord(c[j], k));
+      perimeter += std::sqrt(s);
+    }
   auto d = [&](int v, int k) { return m.coord(c[v], k) - m.coord(c[0], k); };
   if (m.dim == 2) {
     const double area = 0.5 * std::abs(d(1, 0) * d(2, 1) - d(1, 1) * d(2, 0));

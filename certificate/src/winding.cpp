@@ -104,7 +104,7 @@ Finding check_single_cover(const MeshView& m, const FacetSet& b, Components& com
     const Index v = comps.vertex[c];
     int others = 0;
     for (std::size_t o = 0; o < n; ++o) {
-      if (o == c || !box_contains(comps.box[o], m, v)) continue;
+      if (o == c || !boxes_overlap(comps.box[o], facet_box(m, &v, 1), m.dim)) continue;
       const int w = winding_number(m, b, comps.facets[o], m.xyz + static_cast<std::size_t>(v) * m.dim);
       if (w != 0) comps.enclosed_by[c].push_back(o);
       others += w;
