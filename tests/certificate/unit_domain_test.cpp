@@ -113,6 +113,16 @@ TEST(CertificateDomain, InvalidDomains) {
   MeshData cube;
   add_cube(cube, 0, 2);
   expect_defect(square_grid(2), cube, Defect::invalid_domain);  // 3D domain for a 2D mesh
+  expect_defect(kuhn_grid(2), cube, Defect::none);
+  cube.triangles.resize(cube.triangles.size() - 3);  // one triangle missing: not closed
+  expect_defect(kuhn_grid(2), cube, Defect::invalid_domain);
+}
+
+TEST(CertificateDomain, SecondDomainComponentNotMeshed) {
+  MeshData d;
+  add_cube(d, 0, 2);
+  add_cube(d, 3, 4);
+  EXPECT_EQ(expect_defect(kuhn_grid(2), d, Defect::domain_boundary_not_covered).finding.other, 12);
 }
 
 TEST(CertificateDomain, KuhnGridOnCube) {

@@ -154,5 +154,16 @@ TEST(CertificateUnit, SameMeshSameJson) {
   EXPECT_EQ(check_mesh(m).mesh_sha256.size(), 64u);
 }
 
+// The canonical form documented in proofs/mesh_certificate.md, hashed independently with
+// Python's struct + hashlib: the expected value is not produced by the code under test.
+TEST(CertificateUnit, HashOfTheDocumentedExample) {
+  MeshData m;
+  m.dimension = 3;
+  m.coordinates = {0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1, 1, 1, 1};
+  m.tetrahedra = {0, 1, 2, 3, 1, 4, 2, 3};
+  m.tetrahedron_labels = {1, 1};
+  EXPECT_EQ(check_mesh(m).mesh_sha256, "fd1fc435cd464869e34e80fd9e1ccd474aaff7d8500074cb993a3ae852a26722");
+}
+
 }  // namespace
 }  // namespace certimesh::certificate::test
