@@ -61,7 +61,8 @@ def without_cells_2d(nx, ny, removed):
 
 
 def num(x):
-    return repr(float(x)) if x != int(x) else str(int(x))
+    x = float(x)
+    return str(int(x)) if x == int(x) and abs(x) < 2 ** 53 else repr(x)
 
 
 def write_medit(name, pts, elements=(), surface=()):
@@ -157,6 +158,18 @@ def main():
     case("valid_cube2_3d.mesh", "cube2_surface.mesh", 0, "none", 48)
     write_medit("valid_tetrahedron_3d.mesh", [(0, 0, 0), (1, 0, 0), (0, 1, 0), (0, 0, 1)], [(0, 1, 2, 3)])
     case("valid_tetrahedron_3d.mesh", None, 0, "none", 1)
+
+    # Exact maps: the same valid meshes and domains scaled by 2^600 (squared coordinates
+    # overflow) and 2^-1000 (products underflow to subnormals or zero). Still valid.
+    for e in (600, -1000):
+        tag = "huge" if e > 0 else "tiny"
+        sp = lambda pts: [tuple(math.ldexp(x, e) for x in p) for p in pts]
+        write_medit(f"valid_square4_{tag}_2d.mesh", sp(pts), tris)
+        write_poly(f"square4_{tag}.poly", *(lambda p, s: (sp(p), s))(*squares_poly([(0, 0, 4, 4)])))
+        case(f"valid_square4_{tag}_2d.mesh", f"square4_{tag}.poly", 0, "none", 32)
+        write_medit(f"valid_cube2_{tag}_3d.mesh", sp(cp), ct)
+        write_medit(f"cube2_{tag}_surface.mesh", sp(cube_pts), surface=cube_tris)
+        case(f"valid_cube2_{tag}_3d.mesh", f"cube2_{tag}_surface.mesh", 0, "none", 48)
 
     # ---- input defects ----
     write_medit("no_elements_2d.mesh", [(0, 0), (1, 0), (0, 1)], [])
