@@ -13,6 +13,7 @@
 
 #include "certimesh/topology/csr.h"
 #include "certimesh/topology/mesh_entities.h"
+#include "certimesh/topology/star_walk.h"
 #include "certimesh/topology/vertex_stars.h"
 #include "fixtures.h"
 
@@ -148,6 +149,54 @@ TEST(VertexStars, IncidentElementHintIsInTheStar) {
       EXPECT_TRUE(std::find(row.begin(), row.end(), hint.value) != row.end());
     }
   }
+}
+
+// Whether the elements of v's star (brute force) are connected through facets through v:
+// two elements of the star are adjacent when they share S vertices (v is always one of them).
+template <class Mesh>
+bool star_is_facet_connected(const Mesh& mesh, const std::vector<std::uint32_t>& star) {
+  if (star.empty()) return true;
+  std::vector<std::uint32_t> reached{star[0]};
+  for (std::size_t next = 0; next < reached.size(); ++next) {
+    const auto a = mesh.vertices(ElementId{reached[next]});
+    for (const std::uint32_t other : star) {
+      if (std::find(reached.begin(), reached.end(), other) != reached.end()) continue;
+      const auto b = mesh.vertices(ElementId{other});
+      int shared = 0;
+      for (const VertexId x : a) shared += std::find(b.begin(), b.end(), x) != b.end() ? 1 : 0;
+      if (shared == Mesh::simplex_dimension) reached.push_back(other);
+    }
+  }
+  return reached.size() == star.size();
+}
+
+// walk_star (local, from the hint) against the CSR star: equal when the star is connected
+// through facets, a non-empty part of it otherwise.
+template <class Mesh>
+void expect_walks_match_stars(const Mesh& mesh, std::size_t& compared) {
+  const VertexStars<Mesh> stars(mesh);
+  for (std::uint32_t v = 0; v < mesh.vertex_slot_count(); ++v) {
+    const auto row = stars.elements_around(VertexId{v});
+    const std::vector<std::uint32_t> star(row.begin(), row.end());
+    std::vector<std::uint32_t> walked;
+    for (const ElementId e : walk_star(mesh, VertexId{v})) walked.push_back(e.value);
+    EXPECT_TRUE(std::includes(star.begin(), star.end(), walked.begin(), walked.end())) << "vertex " << v;
+    if (star_is_facet_connected(mesh, star)) {
+      EXPECT_EQ(walked, star) << "vertex " << v;
+      ++compared;
+    }
+  }
+}
+
+TEST(StarWalk, FindsTheWholeStarWhenItIsConnected) {
+  std::size_t compared = 0;
+  expect_walks_match_stars(testing::grid2(5, 4, {testing::Cell2{2, 2}}), compared);
+  expect_walks_match_stars(testing::kuhn_grid3(3, 3, 3, {testing::Cell3{1, 1, 1}}), compared);
+  expect_walks_match_stars(testing::torus(4, 5), compared);
+  TetrahedralMesh3 holed = testing::kuhn_grid3(3, 3, 2);
+  for (std::uint32_t e = 0; e < holed.element_slot_count(); e += 4) holed.remove_element(ElementId{e});
+  expect_walks_match_stars(holed, compared);
+  EXPECT_GT(compared, 100u);
 }
 
 }  // namespace
