@@ -58,7 +58,7 @@ struct MeditParser {
     if (!have_dimension) in.fail("Vertices before Dimension");
     if (have_vertices) in.fail("a second Vertices section");
     const auto dim = static_cast<std::size_t>(mesh.dimension);
-    const std::size_t count = in.read_count("vertex count", 2 * (dim + 1));
+    const std::size_t count = in.read_count("vertex count", dim + 1);  // a byte per field at least
     mesh.coordinates.reserve(count * dim);
     mesh.point_labels.reserve(count);
     for (std::size_t v = 0; v < count; ++v) {
@@ -73,7 +73,7 @@ struct MeditParser {
                   std::vector<Index>& cells, std::vector<Label>& labels) {
     if (!have_vertices) in.fail(std::string(keyword) + " before Vertices");
     if (seen) in.fail("a second " + std::string(keyword) + " section");
-    const std::size_t count = in.read_count(std::string(keyword) + " count", 2 * (corners + 1));
+    const std::size_t count = in.read_count(std::string(keyword) + " count", corners + 1);
     cells.reserve(count * corners);
     labels.reserve(count);
     const std::size_t vertex_count = mesh.point_count();

@@ -159,6 +159,10 @@ std::int64_t TextReader::read_integer(std::string_view what, std::int64_t lo, st
   std::string_view token = expect_token(what);
   std::string_view digits = token;
   if (!digits.empty() && digits.front() == '+') digits.remove_prefix(1);
+  // from_chars accepts a leading '-' itself: "+-3" must not pass as -3.
+  if (!digits.empty() && is_sign(digits.front()) && token.front() == '+') {
+    fail("expected " + std::string(what) + " (an integer), got " + quoted(token));
+  }
   std::int64_t value = 0;
   const auto result = std::from_chars(digits.data(), digits.data() + digits.size(), value);
   if (result.ec == std::errc::result_out_of_range) {

@@ -27,6 +27,12 @@ namespace fs = std::filesystem;
 constexpr std::int64_t kInt64Min = std::numeric_limits<std::int64_t>::min();
 constexpr std::int64_t kInt64Max = std::numeric_limits<std::int64_t>::max();
 
+// The bound behind every "count cannot fit in the file" check: each field of a record takes at
+// least one byte. (Counting separators too would be tighter, but then a record that merely
+// lacks a field could be reported as a wrong count on the header line rather than on its own
+// line; the looser bound still keeps every allocation within a small multiple of the file.)
+constexpr std::size_t kMinBytesPerField = 1;
+
 // ---------------------------------------------------------------------------------------------
 // Fields
 
@@ -110,7 +116,7 @@ PointNumbering read_points(TextReader& in, MeshData& mesh) {
   const std::size_t attributes = read_small_count(in, "point attribute count");
   const auto markers = in.read_integer("point marker count (0 or 1)", 0, 1);
   in.end_record("the point header");
-  in.check_count_fits("point count", count, 2 * (1 + dim + attributes + static_cast<std::size_t>(markers)));
+  in.check_count_fits("point count", count, kMinBytesPerField * (1 + dim + attributes + static_cast<std::size_t>(markers)));
   mesh.dimension = static_cast<int>(dim);
   mesh.coordinates.reserve(count * dim);
   RecordNumbers numbers("point");
@@ -149,7 +155,7 @@ void read_cells(TextReader& in, const CellSection& section, const PointNumbering
     fields_per_label = static_cast<std::size_t>(in.read_integer("boundary marker count (0 or 1)", 0, 1));
   }
   in.end_record("the " + section.what + " header");
-  in.check_count_fits(section.what + " count", count, 2 * (1 + section.corners + fields_per_label));
+  in.check_count_fits(section.what + " count", count, kMinBytesPerField * (1 + section.corners + fields_per_label));
   cells.reserve(count * section.corners);
   RecordNumbers numbers(section.what);
   for (std::size_t c = 0; c < count; ++c) {
@@ -172,7 +178,7 @@ void read_domain_points(TextReader& in, int dimension, bool with_attribute, std:
   const std::string what = with_attribute ? "region" : "hole";
   in.begin_record();
   const auto dim = static_cast<std::size_t>(dimension);
-  const std::size_t count = in.read_count(what + " count", 2 * (1 + dim));
+  const std::size_t count = in.read_count(what + " count", kMinBytesPerField * (1 + dim));
   in.end_record("the " + what + " count");
   RecordNumbers numbers(what);
   for (std::size_t h = 0; h < count; ++h) {
