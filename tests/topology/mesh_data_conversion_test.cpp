@@ -6,6 +6,9 @@
 
 #include <filesystem>
 #include <map>
+#include <string>
+
+#include <unistd.h>
 
 #include "certimesh/io/mesh_file.h"
 #include "certimesh/topology/mesh_counts.h"
@@ -88,6 +91,36 @@ TEST(MeshDataConversion, TetrahedralRoundTripCompactsFreedSlots) {
   EXPECT_EQ(data.triangle_count(), before.boundary_faces);
 }
 
+// Through the file formats: a labelled tetrahedral mesh written by io/ (Medit, Gmsh) and read
+// back becomes the same mesh model: same element vertices and labels, same boundary labels.
+TEST(MeshDataConversion, TetrahedralMeshSurvivesMeditAndGmshFiles) {
+  TetrahedralMesh3 mesh = testing::kuhn_grid3(2, 2, 2);
+  for (std::uint32_t e = 0; e < mesh.element_slot_count(); ++e) mesh.set_label(ElementId{e}, Label(1 + e % 3));
+  for (const FacetRecord& f : extract_facets(mesh))
+    if (f.boundary()) mesh.set_facet_label(mesh.facet(f.element, f.local), Label(10 + f.element.value % 5));
+  const io::MeshData data = to_mesh_data(mesh);
+  // Per process: two build trees may run the suite at once.
+  const std::filesystem::path dir =
+      std::filesystem::temp_directory_path() / ("certimesh_topology_test_" + std::to_string(::getpid()));
+  std::filesystem::create_directories(dir);
+  for (const char* name : {"grid.mesh", "grid.msh"}) {
+    SCOPED_TRACE(name);
+    io::write_mesh(data, dir / name);
+    const auto back = from_mesh_data<TetrahedralMesh3>(io::read_mesh(dir / name));
+    ASSERT_TRUE(back.ok()) << back.error->message;
+    ASSERT_EQ(back.mesh->element_count(), mesh.element_count());
+    for (std::uint32_t e = 0; e < mesh.element_slot_count(); ++e) {
+      EXPECT_EQ(back.mesh->vertices(ElementId{e}), mesh.vertices(ElementId{e}));
+      EXPECT_EQ(back.mesh->label(ElementId{e}), mesh.label(ElementId{e}));
+      for (int i = 0; i < 4; ++i) {
+        EXPECT_EQ(back.mesh->neighbour(ElementId{e}, i), mesh.neighbour(ElementId{e}, i));
+        EXPECT_EQ(back.mesh->facet_label(mesh.facet(ElementId{e}, i)), mesh.facet_label(mesh.facet(ElementId{e}, i)));
+      }
+    }
+  }
+  std::filesystem::remove_all(dir);
+}
+
 io::MeshData three_triangles_on_one_edge() {
   io::MeshData d;
   d.dimension = 2;
@@ -124,6 +157,16 @@ TEST(MeshDataConversion, ErrorsNameTheProblemAndTheItem) {
 
   EXPECT_EQ(from_mesh_data<TetrahedralMesh3>(three_triangles_on_one_edge()).error->kind,
             ConversionError::Kind::wrong_dimension);
+
+  io::MeshData three_tets_on_one_face;
+  three_tets_on_one_face.dimension = 3;
+  three_tets_on_one_face.coordinates = {0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1, 0, 0, -1, 1, 1, 1};
+  three_tets_on_one_face.tetrahedra = {0, 1, 2, 3, 0, 2, 1, 4, 0, 1, 2, 5};
+  const auto tets = from_mesh_data<TetrahedralMesh3>(three_tets_on_one_face);
+  ASSERT_FALSE(tets.ok());
+  EXPECT_EQ(tets.error->kind, ConversionError::Kind::non_manifold_facet);
+  EXPECT_EQ(tets.error->item, 2u);
+  EXPECT_NE(tets.error->message.find("tetrahedron 2"), std::string::npos) << tets.error->message;
 }
 
 }  // namespace
