@@ -112,21 +112,21 @@ struct OnFacet {
   friend bool operator<(const OnFacet& a, const OnFacet& b) { return a.vertex != b.vertex ? a.vertex < b.vertex : a.facet < b.facet; }
 };
 
-// Every (boundary vertex, domain facet) incidence by the rounding-box rule. A point outside a
-// facet's double bounding box has its rounding box outside too, so the grid's box test loses
-// nothing.
-std::vector<OnFacet> incidences(const MeshView& m, const std::vector<Index>& verts, const Domain& d) {
+// Every (mesh vertex, domain facet) incidence by the rounding-box rule. A point outside a facet's
+// double bounding box has its rounding box outside too: the grid's box test loses nothing.
+std::vector<OnFacet> incidences(const MeshView& m, const Domain& d) {
   std::vector<Box> boxes;
   for (std::size_t f = 0; f < d.facets.size(); ++f) boxes.push_back(facet_box(d.geo, d.facets.facet(f), d.geo.dim));
-  for (Index v : verts) boxes.push_back(facet_box(m, &v, 1));
+  for (Index v = 0; v < m.vertex_count; ++v) boxes.push_back(facet_box(m, &v, 1));
   std::vector<OnFacet> out;
   const std::size_t facets = d.facets.size();
   BoxGrid(boxes, m.dim).any_pair([&](std::size_t i, std::size_t j) {
     if (i >= facets || j < facets) return false;
-    const Index v = verts[j - facets];
+    const auto v = static_cast<Index>(j - facets);
     const double* p = m.xyz + static_cast<std::size_t>(v) * m.dim;
     const std::vector<Vec> pts = facet_points(d, i);
-    if (meets_box(pts, m.dim, p, false)) out.push_back({v, static_cast<std::uint32_t>(i), meets_box(pts, m.dim, p, true)});
+    const bool exact = meets_box(pts, m.dim, p, true);  // on it exactly implies its box meets it
+    if (exact || meets_box(pts, m.dim, p, false)) out.push_back({v, static_cast<std::uint32_t>(i), exact});
     return false;
   });
   std::sort(out.begin(), out.end());
@@ -180,12 +180,14 @@ Finding boundary_on_domain(const MeshView& m, const FacetSet& b, const Domain& d
 }
 
 // Mesh edges both ways, sorted (interior edges included: they cover internal constraints).
-std::vector<Edge> mesh_edges(const MeshView& m) {
+std::vector<Edge> mesh_edges(const MeshView& m, const OnDomain& on) {
+  std::vector<char> near(m.vertex_count, 0);  // walks only visit vertices on the domain boundary
+  for (const OnFacet& o : on.on) near[o.vertex] = 1;
   std::vector<Edge> e;
   for (std::size_t c = 0; c < m.element_count; ++c)
     for (int i = 0; i < m.corners(); ++i)
       for (int j = 0; j < m.corners(); ++j)
-        if (i != j) e.push_back({m.cell(c)[i], m.cell(c)[j]});
+        if (i != j && near[m.cell(c)[i]] && near[m.cell(c)[j]]) e.push_back({m.cell(c)[i], m.cell(c)[j]});
   std::sort(e.begin(), e.end());
   e.erase(std::unique(e.begin(), e.end()), e.end());
   return e;
@@ -229,7 +231,7 @@ bool walk(const MeshView& m, const std::vector<Edge>& edges, const std::vector<I
 // the mesh facets on it, whose mod-2 boundary must be exactly those chains: a 2-chain with
 // that boundary covers the face an odd number of times, and non-overlapping facets cover once.
 Finding coverage(const MeshView& m, const Domain& d, const std::vector<Index>& lex, const OnDomain& on) {
-  const std::vector<Edge> edges = mesh_edges(m);
+  const std::vector<Edge> edges = mesh_edges(m, on);
   std::vector<std::pair<std::uint32_t, std::array<Index, 3>>> on_face;  // (domain facet, mesh facet), once each
   for (std::size_t e = 0; m.dim == 3 && e < m.element_count; ++e)
     for (int i = 0; i < 4; ++i) {
@@ -304,9 +306,7 @@ Finding check_domain(const MeshView& m, const FacetSet& boundary, const Componen
   Domain d;
   Finding f = load_domain(domain, m.dim, d);
   if (f.defect != Defect::none) return f;
-  std::vector<Index> all(m.vertex_count);
-  std::iota(all.begin(), all.end(), Index{0});
-  const OnDomain on{incidences(m, all, d)};
+  const OnDomain on{incidences(m, d)};
   f = boundary_on_domain(m, boundary, d, on, stats);
   if (f.defect == Defect::none) f = coverage(m, d, lex_order, on);
   if (f.defect == Defect::none) f = holes_and_regions(m, boundary, comps, domain);
