@@ -39,9 +39,9 @@ inline rc::Gen<io::Label> any_label() {
 inline void draw_cells(std::size_t points, std::size_t arity, std::vector<io::Index>& cells,
                        std::vector<io::Label>& labels) {
   if (points == 0) return;
-  const auto count = *rc::gen::inRange<std::size_t>(0, 12);
+  const auto count = fuzz::rcgen::pick<std::size_t>(0, 12);  // whatever RapidCheck's size
   for (std::size_t i = 0; i < count * arity; ++i) {
-    cells.push_back(*rc::gen::inRange<io::Index>(0, static_cast<io::Index>(points)));
+    cells.push_back(fuzz::rcgen::pick<io::Index>(0, static_cast<io::Index>(points)));
   }
   if (*rc::gen::arbitrary<bool>()) {
     for (std::size_t i = 0; i < count; ++i) labels.push_back(*any_label());
@@ -53,7 +53,7 @@ inline rc::Gen<io::MeshData> arbitrary_mesh() {
   return rc::gen::exec([] {
     io::MeshData mesh;
     mesh.dimension = *rc::gen::element(2, 3);
-    const auto points = *rc::gen::inRange<std::size_t>(0, 24);
+    const auto points = fuzz::rcgen::pick<std::size_t>(0, 24);
     for (std::size_t i = 0; i < points * static_cast<std::size_t>(mesh.dimension); ++i) {
       mesh.coordinates.push_back(*extreme_double());
     }
