@@ -11,6 +11,7 @@
 #include <numbers>
 
 #include "certimesh/topology/quality.h"
+#include "fixtures.h"
 
 namespace certimesh::topology {
 namespace {
@@ -163,6 +164,22 @@ TEST(Quality, ClosedForms) {
               1.0, 1e-14);
   EXPECT_DOUBLE_EQ(size_quality_factor(2.0), size_quality_factor(0.5));
   EXPECT_THROW(size_aware_triangle_quality(Point2d{0, 0}, Point2d{1, 0}, Point2d{0, 1}, 0.0), std::invalid_argument);
+}
+
+TEST(Quality, MeshElementsScoreAsTheirShapes) {
+  // Every Kuhn triangle is right isosceles; every Kuhn tetrahedron is the path simplex with
+  // edges 1, 1, 1, √2, √2, √3 and volume 1/6.
+  const double right_isosceles = 12 * std::sqrt(3.0) * 0.5 / std::pow(2 + std::sqrt(2.0), 2);
+  const double kuhn = 1296 * std::sqrt(2.0) / 6 / std::pow(3 + 2 * std::sqrt(2.0) + std::sqrt(3.0), 3);
+  const TriangleMesh2 grid = testing::grid2(3, 2);
+  for (std::uint32_t e = 0; e < grid.element_slot_count(); ++e)
+    EXPECT_NEAR(element_quality(grid, ElementId{e}), right_isosceles, 1e-14);
+  const TetrahedralMesh3 cubes = testing::kuhn_grid3(2, 1, 1);
+  for (std::uint32_t e = 0; e < cubes.element_slot_count(); ++e)
+    EXPECT_NEAR(element_quality(cubes, ElementId{e}), kuhn, 1e-14);
+  const SurfaceMesh3 surface = testing::boundary_surface(cubes);
+  for (std::uint32_t e = 0; e < surface.element_slot_count(); ++e)
+    EXPECT_NEAR(element_quality(surface, ElementId{e}), right_isosceles, 1e-14);
 }
 
 TEST(Quality, DegenerateElementsScoreExactlyZero) {

@@ -16,6 +16,8 @@
 
 #include <array>
 
+#include "certimesh/topology/index.h"
+
 namespace certimesh::topology {
 
 using Point2d = std::array<double, 2>;
@@ -43,8 +45,9 @@ double size_aware_tetrahedron_quality(const Point3d& a, const Point3d& b, const 
 
 /// Shape quality of a live element of a mesh (SimplexMesh<2,2>, <3,2> or <3,3>).
 template <class Mesh>
-double element_quality(const Mesh& mesh, typename Mesh::Element element_vertices) {
-  const auto p = [&](int i) { return mesh.point(element_vertices[static_cast<unsigned>(i)]); };
+double element_quality(const Mesh& mesh, ElementId e) {
+  const auto vertices = mesh.vertices(e);
+  const auto p = [&](int i) { return mesh.point(vertices[static_cast<unsigned>(i)]); };
   if constexpr (Mesh::simplex_dimension == 3)
     return tetrahedron_quality(p(0), p(1), p(2), p(3));
   else
