@@ -59,6 +59,7 @@ class XmlParser {
   XmlParser(const std::string& name, std::string_view text) : name_(name), text_(text) {}
 
   XmlElement parse_document() {
+    if (starts_with("\xEF\xBB\xBF")) pos_ = 3;  // a UTF-8 byte order mark, as some editors save
     skip_misc();
     if (at_end()) fail("no XML element (empty or not a .vtu file)");
     if (!starts_with("<") || starts_with("</")) fail("expected an XML element");

@@ -152,6 +152,7 @@ TEST(VtuMalformed, TheValidBaseIsValid) {
   EXPECT_EQ(m.coordinates, (std::vector<double>{0, 0, 1, 0, 0, 1}));
   EXPECT_EQ(m.triangles, (std::vector<io::Index>{0, 1, 2}));
   EXPECT_EQ(m.triangle_labels, (std::vector<io::Label>{2}));
+  EXPECT_EQ(io::parse_vtu_format("bom.vtu", "\xEF\xBB\xBF" + kValid), m);  // with a UTF-8 byte order mark
 }
 
 TEST(VtuMalformed, TheZlibBaseIsValid) {
