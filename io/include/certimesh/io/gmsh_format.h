@@ -30,11 +30,16 @@
 //  - element types 1 (line), 2 (triangle), 4 (tetrahedron) become segments, triangles,
 //    tetrahedra, each kind ordered by element tag; type 15 (point) is skipped; any other type
 //    (quadrangles, second-order elements, ...) is refused naming its line.
-//  - an element's label is the first physical tag of its entity, 0 when the entity has none or
-//    the file has no $Entities.
+//  - an element's label is the first physical tag of its entity, 0 when the entity has none, is
+//    not listed or the file has no $Entities; a cell kind whose labels are all 0 reads with an
+//    empty label vector (MeshData: "empty = all 0").
 //  - dimension: 3 when the file has a tetrahedron or a node with z != 0, otherwise 2. A planar
 //    surface mesh in the plane z = 0 written as 3D therefore reads back as 2D (the format does
 //    not say which was meant).
+//
+// Precision: certimesh writes the shortest decimal that reads back bit for bit. Gmsh 4.8 itself
+// writes 16 significant digits (%.16g), so a mesh re-saved by Gmsh may come back with
+// coordinates one or two ulps off (tests/io/interop_test.py measures and bounds it).
 #pragma once
 
 #include <filesystem>
