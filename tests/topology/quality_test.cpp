@@ -10,6 +10,7 @@
 #include <cstdlib>
 #include <numbers>
 
+#include "certimesh/topology/element_orientation.h"
 #include "certimesh/topology/quality.h"
 #include "fixtures.h"
 
@@ -180,6 +181,26 @@ TEST(Quality, MeshElementsScoreAsTheirShapes) {
   const SurfaceMesh3 surface = testing::boundary_surface(cubes);
   for (std::uint32_t e = 0; e < surface.element_slot_count(); ++e)
     EXPECT_NEAR(element_quality(surface, ElementId{e}), right_isosceles, 1e-14);
+}
+
+// The fixtures orient by integer determinants (fixtures.h); the exact predicates must agree,
+// and a swap of two vertices or a flattened element must show.
+TEST(ElementOrientation, AgreesWithIntegerDeterminantsAndSeesDegeneracy) {
+  TriangleMesh2 grid = testing::grid2(3, 3);
+  for (std::uint32_t e = 0; e < grid.element_slot_count(); ++e)
+    EXPECT_EQ(element_orientation(grid, ElementId{e}), predicates::Sign::positive);
+  const auto t = grid.vertices(ElementId{0});
+  grid.remove_element(ElementId{0});
+  const ElementId swapped = grid.add_element({t[1], t[0], t[2]});  // the same triangle, reversed
+  EXPECT_EQ(element_orientation(grid, swapped), predicates::Sign::negative);
+  const TetrahedralMesh3 cubes = testing::kuhn_grid3(2, 2, 1);
+  for (std::uint32_t e = 0; e < cubes.element_slot_count(); ++e)
+    EXPECT_EQ(element_orientation(cubes, ElementId{e}), predicates::Sign::positive);
+  TetrahedralMesh3 flat;
+  std::vector<VertexId> v;
+  for (const auto& p : {Point3d{0, 0, 0}, Point3d{1, 0, 0.5}, Point3d{0, 1, 0.25}, Point3d{1, 1, 0.75}})
+    v.push_back(flat.add_vertex(p));
+  EXPECT_EQ(element_orientation(flat, flat.add_element({v[0], v[1], v[2], v[3]})), predicates::Sign::zero);
 }
 
 TEST(Quality, DegenerateElementsScoreExactlyZero) {
