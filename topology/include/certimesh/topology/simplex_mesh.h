@@ -112,6 +112,10 @@ class SimplexMesh {
   std::optional<FacetRef> find_facet(const Facet& f) const;
 
   // --- facet labels ---------------------------------------------------------------------
+  /// Labels a facet by its vertex set, whether or not an element holds it now: the label
+  /// survives the removal and re-addition of elements around it (a boundary facet keeps its
+  /// marker through local modifications that keep the facet). Label 0 clears it. Labels are
+  /// not cleared when a vertex is removed: clear them first if the vertex slot will be reused.
   void set_facet_label(const Facet& f, Label label);
   /// The label set for this facet (any orientation), 0 if none was.
   Label facet_label(const Facet& f) const;
