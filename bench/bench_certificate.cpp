@@ -10,6 +10,7 @@
 #include <cstdlib>
 #include <map>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "certimesh/certificate/check_mesh.h"
@@ -66,6 +67,20 @@ void run_certimesh(benchmark::State& state, const MeshData* m) {
   set_counters(state, *m);
 }
 
+// The same check against the mesh's domain (square .poly / cube surface): adds condition 6.
+struct MeshAndDomain {
+  const MeshData* mesh;
+  const MeshData* domain;
+};
+
+void run_certimesh_with_domain(benchmark::State& state, MeshAndDomain md) {
+  for (auto _ : state) {
+    certimesh::certificate::Report r = certimesh::certificate::check_mesh(*md.mesh, md.domain);
+    benchmark::DoNotOptimize(r);
+  }
+  set_counters(state, *md.mesh);
+}
+
 void run_cgal(benchmark::State& state, const MeshData* m) {
   for (auto _ : state) {
     certimesh_bench::PeerVerdict v = certimesh_bench::cgal_reference_check(*m);
@@ -116,14 +131,29 @@ int main(int argc, char** argv) {
 
   static const MeshData mesh2d = make_grid(2, sizes);
   static const MeshData mesh3d = make_grid(3, sizes);
+  static const MeshData domain2d = certimesh::fuzz::square_domain(
+      certimesh::fuzz::GridSpec{2, {sizes.squares_x, sizes.squares_y, 1}, {}, 0});
+  static const MeshData domain3d = certimesh::fuzz::cube_surface_domain(sizes.cubes_per_axis);
   cross_check(mesh2d);
   cross_check(mesh3d);
+  for (const auto& [mesh, domain] : {std::pair{&mesh2d, &domain2d}, std::pair{&mesh3d, &domain3d}}) {
+    const certimesh::certificate::Report r = certimesh::certificate::check_mesh(*mesh, domain);
+    if (!r.valid) {
+      std::fprintf(stderr, "bench_certificate: the %dD mesh is rejected against its domain: %s\n",
+                   mesh->dimension, r.finding.message.c_str());
+      return 1;
+    }
+  }
   benchmark::AddCustomContext("mesh_2d", std::to_string(elements_of(mesh2d)) + " triangles (jittered Kuhn grid)");
   benchmark::AddCustomContext("mesh_3d", std::to_string(elements_of(mesh3d)) + " tetrahedra (jittered Kuhn grid)");
 
   benchmark::RegisterBenchmark("BM_check_mesh_2d_certimesh", run_certimesh, &mesh2d)->Unit(benchmark::kMillisecond);
+  benchmark::RegisterBenchmark("BM_check_mesh_2d_certimesh_with_domain", run_certimesh_with_domain,
+                               MeshAndDomain{&mesh2d, &domain2d})->Unit(benchmark::kMillisecond);
   benchmark::RegisterBenchmark("BM_check_mesh_2d_cgal_reference", run_cgal, &mesh2d)->Unit(benchmark::kMillisecond);
   benchmark::RegisterBenchmark("BM_check_mesh_3d_certimesh", run_certimesh, &mesh3d)->Unit(benchmark::kMillisecond);
+  benchmark::RegisterBenchmark("BM_check_mesh_3d_certimesh_with_domain", run_certimesh_with_domain,
+                               MeshAndDomain{&mesh3d, &domain3d})->Unit(benchmark::kMillisecond);
   benchmark::RegisterBenchmark("BM_check_mesh_3d_cgal_reference", run_cgal, &mesh3d)->Unit(benchmark::kMillisecond);
 
   RatioReporter reporter;
