@@ -6,7 +6,20 @@
 //   - any other exception, crash, leak or sanitizer report is a finding (libFuzzer stops);
 //   - an accepted mesh without holes/regions survives Medit: format_medit then
 //     parse_medit_format gives the same MeshData bit for bit (a differential check between the
-//     two readers and the writer).
+//     two readers and the writer);
+//   - a refusal names a line that exists in the file it names, in a message of < 512 bytes.
+//
+// Build and run (clang; -DCERTIMESH_SANITIZE=ON puts ASan/UBSan in the readers as well):
+//   cmake -S . -B build-fuzz -DCMAKE_CXX_COMPILER=clang++ -DCERTIMESH_BUILD_FUZZERS=ON \
+//         -DCERTIMESH_SANITIZE=ON -DCERTIMESH_BUILD_BENCHMARKS=OFF -DCMAKE_BUILD_TYPE=RelWithDebInfo
+//   cmake --build build-fuzz --target readers_fuzz
+//   build-fuzz/bin/readers_fuzz -dict=fuzz/targets/readers_fuzz.dict -max_total_time=300 CORPUS
+// Seed CORPUS with the files of tests/io/data and tests/io/malformed, each prefixed by its
+// reader byte (0 .mesh, 1 .node, 2 .ele, 3 .face, 4 .edge, 5 .poly).
+// Measured (clang 14, ASan+UBSan in target and readers, one job on the shared 2-core VM, 69
+// seeds): 300 s runs executed 1,713,836 inputs (5,700/s) and, with the error-line check,
+// 1,406,159 inputs (4,700/s, 976 edges covered); no finding.
+#include <algorithm>
 #include <bit>
 #include <cmath>
 #include <cstdint>
@@ -75,7 +88,25 @@ void check_medit_round_trip(const io::MeshData& m) {
   }
 }
 
+std::size_t line_count(std::string_view text) {
+  return static_cast<std::size_t>(std::count(text.begin(), text.end(), '\n')) + 1;
+}
+
 constexpr const char* kNames[] = {"f.mesh", "f.node", "f.ele", "f.face", "f.edge", "f.poly"};
+
+// The error names a line that exists in the file it names (the main file, or the X.node
+// companion), and its message is short whatever the input (quoted tokens are cut).
+void check_error(const io::FormatError& e, std::size_t reader, std::string_view main,
+                 const std::optional<std::string>& node) {
+  std::size_t lines = 0;
+  if (e.file() == kNames[reader]) {
+    lines = line_count(main);
+  } else if (e.file() == "f.node" && node.has_value()) {
+    lines = line_count(*node);
+  }
+  if (e.line() > lines) fail("error names a line past the end of the file it names");
+  if (std::string_view(e.what()).size() > 512) fail("error message longer than 512 characters");
+}
 
 io::MeshData parse(std::size_t reader, std::string main, std::optional<std::string> node) {
   if (reader == 0) return io::parse_medit_format(kNames[0], std::move(main));
@@ -99,9 +130,11 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   if (split != std::string_view::npos) node = std::string(rest.substr(split + kSeparator.size()));
   io::MeshData mesh;
   try {
-    mesh = parse(reader, std::move(main), std::move(node));
-  } catch (const io::FormatError&) {
-    return 0;  // refusing is a correct answer; what matters is that nothing else happens
+    mesh = parse(reader, main, node);  // copies: the error check below reads them
+  } catch (const io::FormatError& e) {
+    // Refusing is a correct answer, if the error points into the file and stays short.
+    check_error(e, reader, rest.substr(0, split), node);
+    return 0;
   }
   check_well_formed(mesh);
   check_medit_round_trip(mesh);
