@@ -218,6 +218,46 @@ TEST(HandCases, SteinerPointBeyondItsRoundingBoxIsOffTheDomain) {
   EXPECT_TRUE(check_mesh(mesh).valid);  // alone it is a valid mesh
 }
 
+// The same in 3D: the domain is the tetrahedron A (0,0,0), B (3,0,0), C (0,3,0), D (0,0,1),
+// whose face BCD lies on x + y + 3z = 3; the mesh is the cone from A over BCD split at the
+// rounding of the exact point (1, 1, 1/3) of that face.
+io::MeshData split_cone(double third_up) {
+  io::MeshData mesh;
+  mesh.dimension = 3;
+  mesh.coordinates = {0, 0, 0, 3, 0, 0, 0, 3, 0, 0, 0, 1, 1, 1, third_up};
+  for (fuzz::Simplex t : {fuzz::Simplex{0, 1, 2, 4}, fuzz::Simplex{0, 2, 3, 4}, fuzz::Simplex{0, 3, 1, 4}}) {
+    if (oracle_element_sign(mesh, t) < 0) std::swap(t[0], t[1]);
+    mesh.tetrahedra.insert(mesh.tetrahedra.end(), t.begin(), t.end());
+  }
+  return mesh;
+}
+
+io::MeshData slanted_tetrahedron_domain() {
+  io::MeshData d;
+  d.dimension = 3;
+  d.coordinates = {0, 0, 0, 3, 0, 0, 0, 3, 0, 0, 0, 1};
+  d.triangles = {0, 2, 1, 0, 1, 3, 0, 3, 2, 1, 2, 3};  // outward
+  return d;
+}
+
+TEST(HandCases, SteinerPointOnASlantedFaceWithinItsRoundingBox) {
+  const io::MeshData mesh = split_cone(1.0 / 3.0);
+  ASSERT_TRUE(all_elements_positive(mesh));
+  const io::MeshData domain = slanted_tetrahedron_domain();
+  const certificate::Report r = check_mesh(mesh, &domain);
+  ASSERT_TRUE(r.valid) << describe(r);
+  EXPECT_EQ(r.statistics.vertices_exactly_on_domain_boundary, 4u);
+  EXPECT_EQ(r.statistics.vertices_in_rounding_box_only, 1u);
+  double z = 1.0 / 3.0;
+  for (int i = 0; i < 8; ++i) z = std::nextafter(z, 1.0);
+  const io::MeshData off = split_cone(z);
+  ASSERT_TRUE(all_elements_positive(off));
+  const certificate::Report r_off = check_mesh(off, &domain);
+  EXPECT_TRUE(r_off.finding.defect == Defect::vertex_off_domain_boundary ||
+              r_off.finding.defect == Defect::facet_off_domain_boundary)
+      << describe(r_off);
+}
+
 // The certificate JSON is deterministic and names the verdict and the defect.
 TEST(HandCases, CertificateJsonIsDeterministic) {
   io::MeshData mesh = fuzz::kuhn_grid(grid(2, 3, 11));
