@@ -257,6 +257,13 @@ def main():
     gt = gt[:e] + [parts[0]] + gt[e + 1:] + parts[1:]
     write_medit("t_junction_3d.mesh", gp, gt)
     case("t_junction_3d.mesh", None, 1, "t_junction", 386)
+    # The classic T-junction between two squares glued along x = 1, the right one split at
+    # (1, 0.5): the junction's facet ends on the outer boundary, so the boundary passes twice
+    # through (1,0) and (1,1) -- non_manifold_boundary comes first (README).
+    write_medit("t_junction_on_boundary_2d.mesh",
+                [(0, 0), (1, 0), (1, 1), (0, 1), (2, 0), (2, 1), (1, 0.5)],
+                [(0, 1, 2), (0, 2, 3), (1, 4, 6), (6, 4, 5), (6, 5, 2)])
+    case("t_junction_on_boundary_2d.mesh", None, 1, "non_manifold_boundary", 5)
     # Branched double cover: 7 triangles (tetrahedra) around a centre (axis), ring winding twice.
     ring = [(round(1000 * math.cos(4 * math.pi * k / 7)), round(1000 * math.sin(4 * math.pi * k / 7))) for k in range(7)]
     write_medit("boundary_intersection_2d.mesh", ring + [(0, 0)], [(7, k, (k + 1) % 7) for k in range(7)])
