@@ -98,7 +98,7 @@ inline Point3 combination(const std::vector<Point3>& points, const std::vector<d
   return r;
 }
 
-// ---- facets (sorted vertex lists) and the boundary, by sort-free std::map: test-sized meshes ----
+// ---- facets (sorted vertex lists, in a std::map: deterministic order, test-sized meshes) ----
 
 using FacetMap = std::map<Simplex, std::vector<std::size_t>>;
 
