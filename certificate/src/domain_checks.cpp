@@ -215,9 +215,9 @@ bool walk(const MeshView& m, const std::vector<Edge>& edges, const std::vector<I
     const auto r = std::equal_range(edges.begin(), edges.end(), Edge{u, 0}, [](const Edge& x, const Edge& y) { return x.first < y.first; });
     for (auto it = r.first; it != r.second; ++it) {
       const double* p = m.xyz + static_cast<std::size_t>(it->second) * m.dim;
-      double dist = 0;
-      for (int k = 0; k < m.dim; ++k) dist += (p[k] - b[k]) * (p[k] - b[k]);
-      if (dist < best_distance && std::find(seen.begin(), seen.end(), it->second) == seen.end() && meets_box(seg, m.dim, p, false))
+      double dist = 0;  // max-norm: squares would overflow for huge coordinates
+      for (int k = 0; k < m.dim; ++k) dist = std::max(dist, std::abs(p[k] - b[k]));
+      if ((best < 0 || dist < best_distance) && std::find(seen.begin(), seen.end(), it->second) == seen.end() && meets_box(seg, m.dim, p, false))
         best = it->second, best_distance = dist;
     }
     if (best < 0) return false;

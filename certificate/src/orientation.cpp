@@ -2,6 +2,7 @@
 // volume_sign run their floating-point filter inline and reach the exact stage only when the
 // filter is uncertain, which is what keeps this pass fast. The quality measures are computed
 // alongside in double: they are reported, never used for a decision.
+#include <algorithm>
 #include <cmath>
 
 #include "certimesh/predicates/orient2d.h"
@@ -11,24 +12,22 @@
 namespace certimesh::certificate::detail {
 namespace {
 
-// 12√3·|S|/P² (triangle) or 6⁴√2·|V|/P³ (tetrahedron), P the sum of the edge lengths.
+// 12√3·|S|/P² (triangle) or 6⁴√2·|V|/P³ (tetrahedron), P the sum of the edge lengths. The
+// measure is scale-invariant: the differences are divided by their largest magnitude first, so
+// that huge or tiny coordinates neither overflow nor underflow.
 double quality(const MeshView& m, const Index* c) {
-  double perimeter = 0;
+  double x[4][3] = {}, scale = 0, perimeter = 0;
+  for (int v = 1; v <= m.dim; ++v)
+    for (int k = 0; k < m.dim; ++k) scale = std::max(scale, std::abs(x[v][k] = m.coord(c[v], k) - m.coord(c[0], k)));
+  for (int v = 1; v <= m.dim; ++v)
+    for (int k = 0; k < m.dim; ++k) x[v][k] /= scale;
   for (int i = 0; i <= m.dim; ++i)
-    for (int j = i + 1; j <= m.dim; ++j) {
-      double s = 0;
-      for (int k = 0; k < m.dim; ++k) s += (m.coord(c[i], k) - m.coord(c[j], k)) * (m.coord(c[i], k) - m.coord(c[j], k));
-      perimeter += std::sqrt(s);
-    }
-  auto d = [&](int v, int k) { return m.coord(c[v], k) - m.coord(c[0], k); };
-  if (m.dim == 2) {
-    const double area = 0.5 * std::abs(d(1, 0) * d(2, 1) - d(1, 1) * d(2, 0));
-    return 12.0 * std::sqrt(3.0) * area / (perimeter * perimeter);
-  }
-  const double det = d(1, 0) * (d(2, 1) * d(3, 2) - d(2, 2) * d(3, 1)) -
-                     d(1, 1) * (d(2, 0) * d(3, 2) - d(2, 2) * d(3, 0)) +
-                     d(1, 2) * (d(2, 0) * d(3, 1) - d(2, 1) * d(3, 0));
-  return 1296.0 * std::sqrt(2.0) * (std::abs(det) / 6.0) / (perimeter * perimeter * perimeter);
+    for (int j = i + 1; j <= m.dim; ++j)
+      perimeter += std::hypot(x[i][0] - x[j][0], x[i][1] - x[j][1], x[i][2] - x[j][2]);
+  if (m.dim == 2) return 6.0 * std::sqrt(3.0) * std::abs(x[1][0] * x[2][1] - x[1][1] * x[2][0]) / (perimeter * perimeter);
+  const double det = x[1][0] * (x[2][1] * x[3][2] - x[2][2] * x[3][1]) - x[1][1] * (x[2][0] * x[3][2] - x[2][2] * x[3][0]) +
+                     x[1][2] * (x[2][0] * x[3][1] - x[2][1] * x[3][0]);
+  return 216.0 * std::sqrt(2.0) * std::abs(det) / (perimeter * perimeter * perimeter);
 }
 
 predicates::Sign element_sign(const MeshView& m, const Index* c) {
