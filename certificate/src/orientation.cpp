@@ -12,18 +12,18 @@
 namespace certimesh::certificate::detail {
 namespace {
 
-// 12√3·|S|/P² (triangle) or 6⁴√2·|V|/P³ (tetrahedron), P the sum of the edge lengths. The
-// measure is scale-invariant: the differences are divided by their largest magnitude first, so
-// that huge or tiny coordinates neither overflow nor underflow.
+// 12√3·|S|/P² (triangle) or 6⁴√2·|V|/P³ (tetrahedron), P the sum of the edge lengths. It is
+// scale-invariant: huge or tiny elements are scaled first, where squares would overflow/underflow.
 double quality(const MeshView& m, const Index* c) {
   double x[4][3] = {}, scale = 0, perimeter = 0;
   for (int v = 1; v <= m.dim; ++v)
     for (int k = 0; k < m.dim; ++k) scale = std::max(scale, std::abs(x[v][k] = m.coord(c[v], k) - m.coord(c[0], k)));
-  for (int v = 1; v <= m.dim; ++v)
+  for (int v = 1; (scale > 0x1p300 || scale < 0x1p-300) && v <= m.dim; ++v)
     for (int k = 0; k < m.dim; ++k) x[v][k] /= scale;
   for (int i = 0; i <= m.dim; ++i)
     for (int j = i + 1; j <= m.dim; ++j)
-      perimeter += std::hypot(x[i][0] - x[j][0], x[i][1] - x[j][1], x[i][2] - x[j][2]);
+      perimeter += std::sqrt((x[i][0] - x[j][0]) * (x[i][0] - x[j][0]) + (x[i][1] - x[j][1]) * (x[i][1] - x[j][1]) +
+                             (x[i][2] - x[j][2]) * (x[i][2] - x[j][2]));
   if (m.dim == 2) return 6.0 * std::sqrt(3.0) * std::abs(x[1][0] * x[2][1] - x[1][1] * x[2][0]) / (perimeter * perimeter);
   const double det = x[1][0] * (x[2][1] * x[3][2] - x[2][2] * x[3][1]) - x[1][1] * (x[2][0] * x[3][2] - x[2][2] * x[3][0]) +
                      x[1][2] * (x[2][0] * x[3][1] - x[2][1] * x[3][0]);
