@@ -9,6 +9,8 @@
 #include <limits>
 #include <numeric>
 
+#include "certimesh/predicates/orient2d.h"
+#include "certimesh/predicates/orient3d.h"
 #include "close_pairs.h"
 #include "stages.h"
 
@@ -36,14 +38,37 @@ Vec cross(const Vec& a, const Vec& b) {
   return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
 }
 
-// Whether the simplex `pts` (2 or 3 points) meets the box around p: its rounding box, or p
-// itself when `point_only`. Separating axis theorem, exact: the box's axes, the simplex's
-// normal (2D segment, 3D triangle) and the edge x axis cross products (3D). A degenerate box
-// is the limit of boxes, so the same axes decide the point case.
-bool meets_box(const std::vector<Vec>& pts, int dim, const double* p, bool point_only) {
+// Whether p lies exactly on the segment (s[2] null) or triangle `s`, by the exact predicates:
+// the common case (grid vertices, exact midpoints), so the rational box test runs only for the rest.
+bool lies_exactly_on(const std::array<const double*, 3>& s, int dim, const double* p) {
+  using namespace predicates;
+  auto drop = [dim](const double* x, int k) { return dim == 2 ? Point2{x[0], x[1]} : Point2{k == 0 ? x[1] : x[0], k == 2 ? x[1] : x[2]}; };
+  if (s[2] == nullptr) {  // a segment: collinear in every coordinate plane, and within its box
+    for (int k = 0; k < dim; ++k)
+      if (std::min(s[0][k], s[1][k]) > p[k] || p[k] > std::max(s[0][k], s[1][k])) return false;
+    for (int k = 0; k < (dim == 2 ? 1 : 3); ++k)
+      if (orient2d(drop(s[0], k), drop(s[1], k), drop(p, k)) != Sign::zero) return false;
+    return true;
+  }
+  auto pt = [](const double* x) { return Point3{x[0], x[1], x[2]}; };
+  if (orient3d(pt(s[0]), pt(s[1]), pt(s[2]), pt(p)) != Sign::zero) return false;
+  for (int k = 0; k < 3; ++k) {  // coplanar: decide in a coordinate plane the triangle keeps its area in
+    const Sign t = orient2d(drop(s[0], k), drop(s[1], k), drop(s[2], k));
+    if (t == Sign::zero) continue;
+    for (int i = 0; i < 3; ++i)
+      if (orient2d(drop(s[static_cast<std::size_t>(i)], k), drop(s[static_cast<std::size_t>((i + 1) % 3)], k), drop(p, k)) == -t) return false;
+    return true;
+  }
+  return false;
+}
+
+// Whether the simplex `pts` (2 or 3 points) meets the rounding box of p. Separating axis
+// theorem, exact: the box's axes, the simplex's normal (2D segment, 3D triangle) and the
+// edge x axis cross products (3D).
+bool meets_box(const std::vector<Vec>& pts, int dim, const double* p) {
   Vec lo{0, 0, 0}, hi{0, 0, 0};
   const double inf = std::numeric_limits<double>::infinity();
-  for (int k = 0; k < dim; ++k) lo[k] = point_only ? Q(p[k]) : half_way(p[k], -inf), hi[k] = point_only ? Q(p[k]) : half_way(p[k], inf);
+  for (int k = 0; k < dim; ++k) lo[k] = half_way(p[k], -inf), hi[k] = half_way(p[k], inf);
   std::vector<Vec> axes;
   for (int k = 0; k < dim; ++k) axes.push_back(Vec{Q(k == 0), Q(k == 1), Q(k == 2)});
   std::vector<Vec> edges;
@@ -71,6 +96,11 @@ std::vector<Vec> points_of(const MeshView& g, const Index* ids, int count) {
   return out;
 }
 std::vector<Vec> facet_points(const Domain& d, std::size_t f) { return points_of(d.geo, d.facets.facet(f), d.geo.dim); }
+std::array<const double*, 3> corners(const MeshView& g, const Index* ids, int count) {
+  std::array<const double*, 3> out{};  // a segment leaves out[2] null
+  for (int i = 0; i < count; ++i) out[static_cast<std::size_t>(i)] = g.xyz + static_cast<std::size_t>(ids[i]) * g.dim;
+  return out;
+}
 
 Finding invalid(const std::string& why, std::int64_t facet = -1) {
   return finding(Defect::invalid_domain, -1, facet, -1, "the domain " + why);
@@ -124,9 +154,8 @@ std::vector<OnFacet> incidences(const MeshView& m, const Domain& d) {
     if (i >= facets || j < facets) return false;
     const auto v = static_cast<Index>(j - facets);
     const double* p = m.xyz + static_cast<std::size_t>(v) * m.dim;
-    const std::vector<Vec> pts = facet_points(d, i);
-    const bool exact = meets_box(pts, m.dim, p, true);  // on it exactly implies its box meets it
-    if (exact || meets_box(pts, m.dim, p, false)) out.push_back({v, static_cast<std::uint32_t>(i), exact});
+    const bool exact = lies_exactly_on(corners(d.geo, d.facets.facet(i), m.dim), m.dim, p);  // then its box meets it
+    if (exact || meets_box(facet_points(d, i), m.dim, p)) out.push_back({v, static_cast<std::uint32_t>(i), exact});
     return false;
   });
   std::sort(out.begin(), out.end());
@@ -180,9 +209,7 @@ Finding boundary_on_domain(const MeshView& m, const FacetSet& b, const Domain& d
 }
 
 // Mesh edges both ways, sorted (interior edges included: they cover internal constraints).
-std::vector<Edge> mesh_edges(const MeshView& m, const OnDomain& on) {
-  std::vector<char> near(m.vertex_count, 0);  // walks only visit vertices on the domain boundary
-  for (const OnFacet& o : on.on) near[o.vertex] = 1;
+std::vector<Edge> mesh_edges(const MeshView& m, const std::vector<char>& near) {
   std::vector<Edge> e;
   for (std::size_t c = 0; c < m.element_count; ++c)
     for (int i = 0; i < m.corners(); ++i)
@@ -217,7 +244,8 @@ bool walk(const MeshView& m, const std::vector<Edge>& edges, const std::vector<I
       const double* p = m.xyz + static_cast<std::size_t>(it->second) * m.dim;
       double dist = 0;  // max-norm: squares would overflow for huge coordinates
       for (int k = 0; k < m.dim; ++k) dist = std::max(dist, std::abs(p[k] - b[k]));
-      if ((best < 0 || dist < best_distance) && std::find(seen.begin(), seen.end(), it->second) == seen.end() && meets_box(seg, m.dim, p, false))
+      if ((best < 0 || dist < best_distance) && std::find(seen.begin(), seen.end(), it->second) == seen.end() &&
+          (lies_exactly_on({a, b, nullptr}, m.dim, p) || meets_box(seg, m.dim, p)))
         best = it->second, best_distance = dist;
     }
     if (best < 0) return false;
@@ -231,11 +259,14 @@ bool walk(const MeshView& m, const std::vector<Edge>& edges, const std::vector<I
 // the mesh facets on it, whose mod-2 boundary must be exactly those chains: a 2-chain with
 // that boundary covers the face an odd number of times, and non-overlapping facets cover once.
 Finding coverage(const MeshView& m, const Domain& d, const std::vector<Index>& lex, const OnDomain& on) {
-  const std::vector<Edge> edges = mesh_edges(m, on);
+  std::vector<char> near(m.vertex_count, 0);  // on the domain boundary: only these matter below
+  for (const OnFacet& o : on.on) near[o.vertex] = 1;
+  const std::vector<Edge> edges = mesh_edges(m, near);
   std::vector<std::pair<std::uint32_t, std::array<Index, 3>>> on_face;  // (domain facet, mesh facet), once each
   for (std::size_t e = 0; m.dim == 3 && e < m.element_count; ++e)
     for (int i = 0; i < 4; ++i) {
       std::array<Index, 3> x{m.cell(e)[(i + 1) % 4], m.cell(e)[(i + 2) % 4], m.cell(e)[(i + 3) % 4]};
+      if (!near[x[0]] || !near[x[1]] || !near[x[2]]) continue;
       std::sort(x.begin(), x.end());
       if (const std::uint32_t home = on.common(x.data(), 3); home != UINT32_MAX) on_face.push_back({home, x});
     }
@@ -278,7 +309,7 @@ Finding holes_and_regions(const MeshView& m, const FacetSet& b, const Components
     bool covered = false;
     for (std::size_t f = 0; f < b.size() && !covered; ++f) {
       const Index* x = b.facet(f);
-      covered = inside(facet_box(m, x, m.dim)) && meets_box(points_of(m, x, m.dim), m.dim, p, true);
+      covered = inside(facet_box(m, x, m.dim)) && lies_exactly_on(corners(m, x, m.dim), m.dim, p);
     }
     int w = 0;
     std::size_t innermost = SIZE_MAX;

@@ -10,9 +10,9 @@ namespace {
 
 using certificate::Defect;
 
-// A boundary vertex off the domain boundary makes its boundary facets off it too; defect.h
-// lists facet_off first, the checker may name the vertex: both accepted (README.md).
-const std::vector<Defect> kOffDomain{Defect::facet_off_domain_boundary, Defect::vertex_off_domain_boundary};
+// A boundary vertex off the domain boundary is vertex_off_domain_boundary; facet_off is only
+// for facets whose vertices are all on the domain boundary (defect.h).
+const Defect kOffDomain = Defect::vertex_off_domain_boundary;
 
 std::uint64_t draw_choice() { return *rc::gen::inRange<std::uint64_t>(0, 1u << 20); }
 
@@ -80,8 +80,7 @@ void missing_element(int dim) {
   const fuzz::MutationSite site = mutate(g.mesh, [&](io::MeshData& m) { return fuzz::remove_interior_element(m, c); });
   // Alone, a mesh with a cavity is a valid mesh of the region its boundary encloses.
   expect_accepted(g.mesh, nullptr);
-  // The cavity's vertices are boundary vertices off the domain too: either defect (README.md,
-  // "Ambiguity"), at a vertex of the removed element.
+  // The cavity's vertices are boundary vertices off the domain, at a vertex of the removed element.
   expect_rejected(g.mesh, &g.domain, kOffDomain, &site);
 }
 
@@ -109,9 +108,7 @@ void boundary_vertex_off_domain(int dim) {
       mutate(g.mesh, [&](io::MeshData& m) { return fuzz::move_boundary_vertex_off(m, c, outward); });
   RC_ASSERT(all_elements_positive(g.mesh));
   expect_accepted(g.mesh, nullptr);  // alone, still a valid mesh of a slightly different region
-  // Its boundary facets leave the domain boundary at that vertex (first in defect.h's order);
-  // vertex_off_domain_boundary is also accepted (README.md: the interface's order makes it
-  // unreachable otherwise).
+  // That vertex is a boundary vertex on no domain segment/face.
   expect_rejected(g.mesh, &g.domain, kOffDomain, nullptr);
   const certificate::Report r = certificate::check_mesh(g.mesh, &g.domain);
   RC_ASSERT(r.finding.vertex == -1 || r.finding.vertex == site.vertices[0]);
@@ -122,7 +119,7 @@ void boundary_element_removed(int dim) {
   const std::uint64_t c = draw_choice();
   const fuzz::MutationSite site = mutate(g.mesh, [&](io::MeshData& m) { return fuzz::remove_boundary_element(m, c); });
   expect_accepted(g.mesh, nullptr);
-  // The exposed interior vertex is off the domain too: either defect (README.md, "Ambiguity").
+  // The exposed interior vertex is a boundary vertex off the domain.
   expect_rejected(g.mesh, &g.domain, kOffDomain, &site);
 }
 

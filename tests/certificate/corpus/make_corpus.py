@@ -286,12 +286,12 @@ def main():
     # A corner triangle removed: its diagonal is now a boundary facet inside the square.
     rp, rt = kuhn_2d(4, 4)
     write_medit("facet_off_domain_2d.mesh", rp, rt[1:])
-    # Its vertex (1,1) is now a boundary vertex off the domain as well: either defect (README).
-    case("facet_off_domain_2d.mesh", "square4.poly", 1, "facet_off_domain_boundary|vertex_off_domain_boundary", 31)
+    # Its vertex (1,1) is now a boundary vertex off the domain: vertex_off (defect.h).
+    case("facet_off_domain_2d.mesh", "square4.poly", 1, "vertex_off_domain_boundary", 31)
     case("facet_off_domain_2d.mesh", None, 0, "none", 31)
     rp, rt = kuhn_3d(2)
     write_medit("facet_off_domain_3d.mesh", rp, rt[1:])
-    case("facet_off_domain_3d.mesh", "cube2_surface.mesh", 1, "facet_off_domain_boundary|vertex_off_domain_boundary", 47)
+    case("facet_off_domain_3d.mesh", "cube2_surface.mesh", 1, "vertex_off_domain_boundary", 47)
     # Corner cut: the elements of the corner (4,0) / (2,0,0) and that vertex removed. Every
     # boundary vertex is still on the domain boundary; the new facets cross the corner.
     cp2, ct2 = kuhn_2d(4, 4)
@@ -310,12 +310,12 @@ def main():
     op = list(op)
     op[2] = (2.0, -1 / 256)
     write_medit("vertex_off_domain_2d.mesh", op, ot)
-    case("vertex_off_domain_2d.mesh", "square4.poly", 1, "facet_off_domain_boundary|vertex_off_domain_boundary", 32)
+    case("vertex_off_domain_2d.mesh", "square4.poly", 1, "vertex_off_domain_boundary", 32)
     op, ot = kuhn_3d(2)
     op = list(op)
     op[4] = (1.0, 1.0, -1 / 256)  # the centre of the bottom face
     write_medit("vertex_off_domain_3d.mesh", op, ot)
-    case("vertex_off_domain_3d.mesh", "cube2_surface.mesh", 1, "facet_off_domain_boundary|vertex_off_domain_boundary", 48)
+    case("vertex_off_domain_3d.mesh", "cube2_surface.mesh", 1, "vertex_off_domain_boundary", 48)
     case("valid_square4_2d.mesh", "two_squares.poly", 1, "domain_boundary_not_covered", 32)
     case("valid_cube2_3d.mesh", "two_cubes_surface.mesh", 1, "domain_boundary_not_covered", 48)
     case("valid_square4_2d.mesh", "square4_hole.poly", 1, "hole_covered", 32)

@@ -30,8 +30,10 @@ enum class Defect {
   multiple_cover,              // some region is covered more than once (winding number >= 2)
   // against the domain (--domain)
   invalid_domain,              // the domain itself is not a valid boundary description
-  facet_off_domain_boundary,   // a boundary facet of the mesh not on the domain boundary
-  vertex_off_domain_boundary,  // a boundary vertex on no domain segment/face (rounding-box rule)
+  facet_off_domain_boundary,   // a boundary facet whose vertices all lie on the domain boundary
+                               // but on no common domain segment/face (it cuts across)
+  vertex_off_domain_boundary,  // a boundary vertex on no domain segment/face (rounding-box rule);
+                               // its facets are then judged by this defect, not the one above
   domain_boundary_not_covered, // part of a domain segment/face covered by no mesh facet
   hole_covered,                // a hole point of the domain lies inside the mesh
   region_not_meshed,           // a bounded region of the domain (no hole point) left empty
