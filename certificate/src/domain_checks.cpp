@@ -62,6 +62,39 @@ bool lies_exactly_on(const std::array<const double*, 3>& s, int dim, const doubl
   return false;
 }
 
+// A cheap exact proof that p's rounding box misses the segment (2D) / triangle `s`: the box of
+// p's neighbouring doubles (it contains the rounding box) lies strictly on one side of the
+// facet's line / plane, or, in the plane, strictly outside one edge. Otherwise: rationals.
+bool box_certainly_misses(const std::array<const double*, 3>& s, int dim, const double* p) {
+  using namespace predicates;
+  std::array<std::array<double, 3>, 2> box{};  // lo, hi
+  for (int k = 0; k < dim; ++k) {
+    box[0][k] = std::nextafter(p[k], -HUGE_VAL), box[1][k] = std::nextafter(p[k], HUGE_VAL);
+    if (!std::isfinite(box[0][k]) || !std::isfinite(box[1][k]) || (dim == 3 && s[2] == nullptr)) return false;
+  }
+  auto all_corners = [&](int kx, int ky, int kz, Sign want, auto&& sign_at) {  // kz < 0: a 2D box
+    for (int b = 0; b < (kz < 0 ? 4 : 8); ++b)
+      if (sign_at(box[b & 1][kx], box[b >> 1 & 1][ky], kz < 0 ? 0.0 : box[b >> 2 & 1][kz]) != want) return false;
+    return true;
+  };
+  auto drop = [dim](const double* x, int k) { return dim == 2 ? Point2{x[0], x[1]} : Point2{k == 0 ? x[1] : x[0], k == 2 ? x[1] : x[2]}; };
+  auto outside_an_edge = [&](int k, int n, Sign t) {  // projected along axis k; n edges
+    const int kx = dim == 2 || k != 0 ? 0 : 1, ky = dim == 2 || k == 2 ? 1 : 2;
+    for (int i = 0; i < n; ++i) {
+      const Point2 u = drop(s[static_cast<std::size_t>(i)], k), v = drop(s[static_cast<std::size_t>((i + 1) % (n == 1 ? 2 : 3))], k);
+      if (all_corners(kx, ky, -1, -t, [&](double x, double y, double) { return orient2d(u, v, {x, y}); })) return true;
+    }
+    return false;
+  };
+  if (dim == 2) return outside_an_edge(2, 1, Sign::negative) || outside_an_edge(2, 1, Sign::positive);
+  const Point3 a{s[0][0], s[0][1], s[0][2]}, b{s[1][0], s[1][1], s[1][2]}, c{s[2][0], s[2][1], s[2][2]};
+  for (Sign side : {Sign::negative, Sign::positive})
+    if (all_corners(0, 1, 2, side, [&](double x, double y, double z) { return orient3d(a, b, c, {x, y, z}); })) return true;
+  for (int k = 0; k < 3; ++k)
+    if (const Sign t = orient2d(drop(s[0], k), drop(s[1], k), drop(s[2], k)); t != Sign::zero) return outside_an_edge(k, 3, t);
+  return false;
+}
+
 // Whether the simplex `pts` (2 or 3 points) meets the rounding box of p. Separating axis
 // theorem, exact: the box's axes, the simplex's normal (2D segment, 3D triangle) and the
 // edge x axis cross products (3D).
@@ -155,7 +188,8 @@ std::vector<OnFacet> incidences(const MeshView& m, const Domain& d) {
     const auto v = static_cast<Index>(j - facets);
     const double* p = m.xyz + static_cast<std::size_t>(v) * m.dim;
     const bool exact = lies_exactly_on(corners(d.geo, d.facets.facet(i), m.dim), m.dim, p);  // then its box meets it
-    if (exact || meets_box(facet_points(d, i), m.dim, p)) out.push_back({v, static_cast<std::uint32_t>(i), exact});
+    if (exact || (!box_certainly_misses(corners(d.geo, d.facets.facet(i), m.dim), m.dim, p) && meets_box(facet_points(d, i), m.dim, p)))
+      out.push_back({v, static_cast<std::uint32_t>(i), exact});
     return false;
   });
   std::sort(out.begin(), out.end());
@@ -245,7 +279,7 @@ bool walk(const MeshView& m, const std::vector<Edge>& edges, const std::vector<I
       double dist = 0;  // max-norm: squares would overflow for huge coordinates
       for (int k = 0; k < m.dim; ++k) dist = std::max(dist, std::abs(p[k] - b[k]));
       if ((best < 0 || dist < best_distance) && std::find(seen.begin(), seen.end(), it->second) == seen.end() &&
-          (lies_exactly_on({a, b, nullptr}, m.dim, p) || meets_box(seg, m.dim, p)))
+          (lies_exactly_on({a, b, nullptr}, m.dim, p) || (!box_certainly_misses({a, b, nullptr}, m.dim, p) && meets_box(seg, m.dim, p))))
         best = it->second, best_distance = dist;
     }
     if (best < 0) return false;
