@@ -9,6 +9,7 @@
 
 #include "certimesh/io/format_error.h"
 #include "certimesh/io/gmsh_format.h"
+#include "text_mutation.h"
 
 namespace certimesh::testing {
 namespace {
@@ -117,21 +118,10 @@ TEST(GmshMalformed, RandomByteMutationsOnlyEverThrowFormatError) {
   // biased towards characters that matter to the format. Anything but a FormatError or a
   // result fails; the sanitizer rerun of the suite catches memory errors on the way.
   const std::string valid = kHeader + kNodes + "$Elements\n1 1 1 1\n2 1 2 1\n1 1 2 3\n$EndElements\n$NodeData\n1\n\"label\"\n1\n0\n3\n0\n1\n1\n2 5\n$EndNodeData\n";
-  const std::string alphabet = "0123456789 -+.eE\n<>/=\"$abcxyzNnIiAaFf";
   std::mt19937_64 rng(20261129);
   std::size_t refused = 0;
   for (int round = 0; round < 20000; ++round) {
-    std::string text = valid;
-    const int edits = 1 + static_cast<int>(rng() % 3);
-    for (int e = 0; e < edits && !text.empty(); ++e) {
-      const std::size_t at = rng() % text.size();
-      const char c = alphabet[rng() % alphabet.size()];
-      switch (rng() % 3) {
-        case 0: text[at] = c; break;
-        case 1: text.insert(text.begin() + static_cast<std::ptrdiff_t>(at), c); break;
-        default: text.erase(at, 1 + rng() % 8); break;
-      }
-    }
+    const std::string text = mutate_text(valid, rng);
     try {
       (void)io::parse_gmsh_format("mutated.msh", text);
     } catch (const io::FormatError& error) {

@@ -9,6 +9,7 @@
 
 #include "certimesh/io/format_error.h"
 #include "certimesh/io/vtu_format.h"
+#include "text_mutation.h"
 
 namespace certimesh::testing {
 namespace {
@@ -182,21 +183,10 @@ TEST(VtuMalformed, RandomByteMutationsOnlyEverThrowFormatError) {
   // biased towards characters that matter to the format. Anything but a FormatError or a
   // result fails; the sanitizer rerun of the suite catches memory errors on the way.
   const std::string zlib_valid = zlib_connectivity("AQAAABgAAAAAAAAAEAAAAA==eJxjYIAARijNBKUBADgABA==");
-  const std::string alphabet = "0123456789 -+.eE\n<>/=\"$abcxyzNnIiAaFf";
   std::mt19937_64 rng(20261129);
   std::size_t refused = 0;
   for (int round = 0; round < 20000; ++round) {
-    std::string text = round % 2 == 0 ? kValid : zlib_valid;  // ASCII, and base64 of zlib data
-    const int edits = 1 + static_cast<int>(rng() % 3);
-    for (int e = 0; e < edits && !text.empty(); ++e) {
-      const std::size_t at = rng() % text.size();
-      const char c = alphabet[rng() % alphabet.size()];
-      switch (rng() % 3) {
-        case 0: text[at] = c; break;
-        case 1: text.insert(text.begin() + static_cast<std::ptrdiff_t>(at), c); break;
-        default: text.erase(at, 1 + rng() % 8); break;
-      }
-    }
+    const std::string text = mutate_text(round % 2 == 0 ? kValid : zlib_valid, rng);  // ASCII, and base64 of zlib data
     try {
       (void)io::parse_vtu_format("mutated.vtu", text);
     } catch (const io::FormatError& error) {
