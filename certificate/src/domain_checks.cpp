@@ -38,25 +38,29 @@ Vec cross(const Vec& a, const Vec& b) {
   return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
 }
 
+// Point x seen along coordinate axis k (3D: the other two coordinates, in order; 2D: x itself).
+predicates::Point2 drop_axis(const double* x, int k, int dim) {
+  return dim == 2 ? predicates::Point2{x[0], x[1]} : predicates::Point2{k == 0 ? x[1] : x[0], k == 2 ? x[1] : x[2]};
+}
+
 // Whether p lies exactly on the segment (s[2] null) or triangle `s`, by the exact predicates:
 // the common case (grid vertices, exact midpoints), so the rational box test runs only for the rest.
 bool lies_exactly_on(const std::array<const double*, 3>& s, int dim, const double* p) {
   using namespace predicates;
-  auto drop = [dim](const double* x, int k) { return dim == 2 ? Point2{x[0], x[1]} : Point2{k == 0 ? x[1] : x[0], k == 2 ? x[1] : x[2]}; };
   if (s[2] == nullptr) {  // a segment: collinear in every coordinate plane, and within its box
     for (int k = 0; k < dim; ++k)
       if (std::min(s[0][k], s[1][k]) > p[k] || p[k] > std::max(s[0][k], s[1][k])) return false;
     for (int k = 0; k < (dim == 2 ? 1 : 3); ++k)
-      if (orient2d(drop(s[0], k), drop(s[1], k), drop(p, k)) != Sign::zero) return false;
+      if (orient2d(drop_axis(s[0], k, dim), drop_axis(s[1], k, dim), drop_axis(p, k, dim)) != Sign::zero) return false;
     return true;
   }
   auto pt = [](const double* x) { return Point3{x[0], x[1], x[2]}; };
   if (orient3d(pt(s[0]), pt(s[1]), pt(s[2]), pt(p)) != Sign::zero) return false;
   for (int k = 0; k < 3; ++k) {  // coplanar: decide in a coordinate plane the triangle keeps its area in
-    const Sign t = orient2d(drop(s[0], k), drop(s[1], k), drop(s[2], k));
+    const Sign t = orient2d(drop_axis(s[0], k, dim), drop_axis(s[1], k, dim), drop_axis(s[2], k, dim));
     if (t == Sign::zero) continue;
     for (int i = 0; i < 3; ++i)
-      if (orient2d(drop(s[static_cast<std::size_t>(i)], k), drop(s[static_cast<std::size_t>((i + 1) % 3)], k), drop(p, k)) == -t) return false;
+      if (orient2d(drop_axis(s[static_cast<std::size_t>(i)], k, dim), drop_axis(s[static_cast<std::size_t>((i + 1) % 3)], k, dim), drop_axis(p, k, dim)) == -t) return false;
     return true;
   }
   return false;
@@ -77,11 +81,10 @@ bool box_certainly_misses(const std::array<const double*, 3>& s, int dim, const 
       if (sign_at(box[b & 1][kx], box[b >> 1 & 1][ky], kz < 0 ? 0.0 : box[b >> 2 & 1][kz]) != want) return false;
     return true;
   };
-  auto drop = [dim](const double* x, int k) { return dim == 2 ? Point2{x[0], x[1]} : Point2{k == 0 ? x[1] : x[0], k == 2 ? x[1] : x[2]}; };
   auto outside_an_edge = [&](int k, int n, Sign t) {  // projected along axis k; n edges
     const int kx = dim == 2 || k != 0 ? 0 : 1, ky = dim == 2 || k == 2 ? 1 : 2;
     for (int i = 0; i < n; ++i) {
-      const Point2 u = drop(s[static_cast<std::size_t>(i)], k), v = drop(s[static_cast<std::size_t>((i + 1) % (n == 1 ? 2 : 3))], k);
+      const Point2 u = drop_axis(s[static_cast<std::size_t>(i)], k, dim), v = drop_axis(s[static_cast<std::size_t>((i + 1) % (n == 1 ? 2 : 3))], k, dim);
       if (all_corners(kx, ky, -1, -t, [&](double x, double y, double) { return orient2d(u, v, {x, y}); })) return true;
     }
     return false;
@@ -91,7 +94,7 @@ bool box_certainly_misses(const std::array<const double*, 3>& s, int dim, const 
   for (Sign side : {Sign::negative, Sign::positive})
     if (all_corners(0, 1, 2, side, [&](double x, double y, double z) { return orient3d(a, b, c, {x, y, z}); })) return true;
   for (int k = 0; k < 3; ++k)
-    if (const Sign t = orient2d(drop(s[0], k), drop(s[1], k), drop(s[2], k)); t != Sign::zero) return outside_an_edge(k, 3, t);
+    if (const Sign t = orient2d(drop_axis(s[0], k, dim), drop_axis(s[1], k, dim), drop_axis(s[2], k, dim)); t != Sign::zero) return outside_an_edge(k, 3, t);
   return false;
 }
 
