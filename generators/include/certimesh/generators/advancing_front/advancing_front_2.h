@@ -1,0 +1,63 @@
+// The monograph's Algorithm 10: the 2D advancing front (digest B §3.2-§3.7).
+//
+// Input: points and a closed front F(P) of directed edges with the unmeshed region on their
+// left (outer sides counterclockwise, both directions of every internal cut). Each step takes
+// the shortest front edge, builds the ideal apex from the size policy, gathers candidate
+// front vertices from a local search structure, applies the h and r exclusion radii, and
+// accepts the first candidate whose triangle is positively oriented and meets no front edge
+// (triangle-segment tests that may err only towards "intersect"); when the local search
+// finds nothing it retries over the whole front with exact predicates (§3.3.3 needs exact
+// signs there). Every loop is bounded by the estimates (3.3.3)-(3.3.4), asserted.
+//
+// It never fails: whatever it leaves (the bound reached, or no candidate -- impossible with
+// exact signs, but checked) is returned as `remaining_front`, a closed front of the unmeshed
+// rest, for the Delaunay completion.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include "certimesh/generators/progress.h"
+#include "certimesh/generators/size_policy.h"
+#include "certimesh/predicates/point.h"
+
+namespace certimesh::generators {
+
+using predicates::Point2;
+
+struct FrontEdge {
+  std::uint32_t a = 0;  // the region lies to the left of a -> b
+  std::uint32_t b = 0;
+  friend bool operator==(const FrontEdge&, const FrontEdge&) = default;
+};
+
+struct AdvancingFrontOptions {
+  SizePolicy size;
+  /// Upper bound on triangles; 0 = the bound (3.3.4) computed from the input.
+  std::uint64_t max_triangles = 0;
+};
+
+struct AdvancingFrontStats {
+  std::uint64_t triangles = 0;
+  std::uint64_t new_vertices = 0;
+  std::uint64_t global_retries = 0;        // local search failed, full enumeration used
+  std::uint64_t candidates_tested = 0;
+  std::uint64_t triangle_bound = 0;        // the (3.3.4) bound the loop asserted
+  bool completed = false;                  // the front closed by itself
+};
+
+struct AdvancingFrontResult {
+  std::vector<Point2> points;                          // the input points, then the new vertices
+  std::vector<std::array<std::uint32_t, 3>> triangles; // counterclockwise, indices into points
+  std::vector<FrontEdge> remaining_front;              // empty when completed
+  AdvancingFrontStats stats;
+};
+
+/// Runs Algorithm 10 from the closed front `front` over `points`. Deterministic.
+AdvancingFrontResult advance_front_2(std::span<const Point2> points, std::span<const FrontEdge> front,
+                                     const AdvancingFrontOptions& options,
+                                     const ProgressCallback& progress = {});
+
+}  // namespace certimesh::generators

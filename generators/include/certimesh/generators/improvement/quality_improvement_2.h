@@ -1,0 +1,52 @@
+// The monograph's Algorithm 35 in 2D: mesh improvement by local modifications (digest D §3).
+// Elements are kept in ascending quality; the worst is tried first with the five basic
+// operations of topology/local_modifications_2.h (insert on edge, flip, node shift, edge
+// collapse, node deletion), each committed only when the worst quality of what it changes
+// rises strictly (accept-only-if-better), so the mesh quality never decreases. Validity is
+// decided by exact orientation signs, never by a tolerance.
+//
+// The boundary trace is kept: boundary edges and constrained interior edges (labelled
+// facets: cuts, region interfaces) are never flipped, split, collapsed or moved off.
+#pragma once
+
+#include <array>
+#include <cstdint>
+
+#include "certimesh/generators/progress.h"
+#include "certimesh/generators/size_policy.h"
+#include "certimesh/topology/simplex_mesh.h"
+
+namespace certimesh::generators {
+
+enum class LocalOperation2 : std::uint8_t {
+  insert_on_edge = 1u << 0,  // Algorithm 30
+  flip = 1u << 1,            // Algorithm 31
+  node_shift = 1u << 2,      // Algorithm 32
+  edge_collapse = 1u << 3,   // Algorithm 33
+  node_deletion = 1u << 4,   // Algorithm 34
+};
+inline constexpr std::uint8_t all_local_operations_2 = 0x1f;
+
+struct ImprovementOptions2 {
+  double target_quality = 0.9;       // Q0: stop when the worst element reaches it
+  std::uint64_t max_operations = 0;  // N1; 0 = 5 x the element count
+  std::uint32_t basket_size = 0;     // N2; 0 = 7 % of the element count (at least 16)
+  std::uint32_t max_baskets = 0;     // N3; 0 = enough that N2 * N3 exceeds the element count
+  std::uint8_t operations = all_local_operations_2;
+  /// Size-aware quality (6.1.5) with this size; shape quality (2.1.3) when empty.
+  SizePolicy size;
+};
+
+struct ImprovementStats2 {
+  std::uint64_t iterations = 0;                   // Algorithm 35 iterations
+  std::array<std::uint64_t, 5> successes{};       // per operation, in the enum's bit order
+  double initial_worst = 0.0, final_worst = 0.0;  // with the quality being optimised
+  double initial_mean = 0.0, final_mean = 0.0;
+  bool reached_target = false;
+};
+
+/// Improves `mesh` in place. Deterministic.
+ImprovementStats2 improve_quality_2(topology::TriangleMesh2& mesh, const ImprovementOptions2& options,
+                                    const ProgressCallback& progress = {});
+
+}  // namespace certimesh::generators

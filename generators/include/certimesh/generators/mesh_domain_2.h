@@ -1,0 +1,59 @@
+// The 2D meshing pipeline, from a planar domain to a mesh that `certimesh check --domain`
+// certifies:
+//   1. validate the boundary exactly (domain_validation.h);
+//   2. discretize long segments to the size policy (Steiner points on a segment are the
+//      rounding of exact points of it -- design decision 2);
+//   3. constrained Delaunay triangulation of the boundary, classified into inside/outside and
+//      regions: this decides open loops and empty domains, and gives each region its label;
+//   4. the elements: advancing front (with Delaunay completion of whatever it leaves) or
+//      Delaunay refinement;
+//   5. quality improvement by local modifications, boundary trace kept.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "certimesh/generators/domain/planar_domain.h"
+#include "certimesh/generators/progress.h"
+#include "certimesh/generators/size_policy.h"
+#include "certimesh/io/mesh_data.h"
+
+namespace certimesh::generators {
+
+enum class MeshAlgorithm2 { advancing_front, delaunay };
+
+struct MeshDomainOptions2 {
+  MeshAlgorithm2 algorithm = MeshAlgorithm2::advancing_front;
+  SizePolicy size;
+  bool improve = true;           // run the local-modification improvement
+  double target_quality = 0.0;   // 0 = the default of the improvement stage
+};
+
+struct StageTiming {
+  std::string stage;
+  double seconds = 0.0;
+};
+
+struct MeshDomainStats2 {
+  std::uint64_t boundary_vertices = 0;
+  std::uint64_t vertices = 0;
+  std::uint64_t triangles = 0;
+  std::uint64_t completed_by_delaunay = 0;  // triangles the Delaunay completion added
+  double worst_quality = 0.0;
+  double mean_quality = 0.0;
+  std::vector<StageTiming> timings;
+};
+
+struct MeshDomainResult2 {
+  io::MeshData mesh;  // dimension 2: triangles with region labels, boundary and cut segments
+  MeshDomainStats2 stats;
+};
+
+/// Meshes `domain`. Throws InvalidDomain (domain_problem.h) for an invalid domain; never
+/// returns an invalid mesh.
+MeshDomainResult2 mesh_domain_2(const PlanarDomain& domain, const MeshDomainOptions2& options,
+                                const ProgressCallback& progress = {});
+
+}  // namespace certimesh::generators
