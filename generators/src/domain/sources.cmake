@@ -1,4 +1,7 @@
 # Sources of generators/src/domain (included by generators/CMakeLists.txt).
 target_sources(certimesh_generators PRIVATE
-  ${CMAKE_CURRENT_LIST_DIR}/placeholder_domain.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/domain_problem.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/domain_text.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/domain_validation.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/domain_mesh_data.cpp
 )

@@ -25,6 +25,7 @@ enum class DomainProblemKind {
   isolated_vertex,          // a vertex on no segment
   open_boundary,            // a segment with the domain on neither side (an open loop)
   empty_domain,             // every face is a hole or unbounded
+  bad_region_attribute,     // a .poly region attribute that is not an integer label
 };
 
 struct DomainProblem {

@@ -1,0 +1,111 @@
+// PlanarDomain <-> io::MeshData (the .poly exchange form). Structural refusals only; the
+// geometry is validate_domain's.
+#include <cmath>
+#include <cstdint>
+#include <limits>
+#include <string>
+#include <vector>
+
+#include "certimesh/generators/domain/domain_validation.h"
+#include "certimesh/io/mesh_file.h"
+#include "domain_text.h"
+
+namespace certimesh::generators {
+
+namespace {
+
+[[noreturn]] void refuse(DomainProblemKind kind, std::string message, std::vector<std::uint32_t> segments = {}) {
+  throw InvalidDomain({DomainProblem{kind, std::move(segments), {}, std::move(message)}});
+}
+
+std::vector<Point2> points_of(const std::vector<double>& xy) {
+  std::vector<Point2> points(xy.size() / 2);
+  for (std::size_t i = 0; i < points.size(); ++i) points[i] = {xy[2 * i], xy[2 * i + 1]};
+  return points;
+}
+
+// A region attribute is a label: an integer in the range of io::Label (2.0 is 2; 2.5 is refused
+// rather than silently rounded, since two regions would then share or swap labels unnoticed).
+io::Label label_of_attribute(double attribute, std::size_t region) {
+  const bool integral = std::isfinite(attribute) && std::nearbyint(attribute) == attribute;
+  const bool in_range = attribute >= static_cast<double>(std::numeric_limits<io::Label>::min()) &&
+                        attribute <= static_cast<double>(std::numeric_limits<io::Label>::max());
+  if (!integral || !in_range) {
+    std::string shown;
+    io::append_double(shown, attribute);
+    refuse(DomainProblemKind::bad_region_attribute,
+           "region point " + std::to_string(region) + " has attribute " + shown +
+               ", which is not an integer region label");
+  }
+  return static_cast<io::Label>(attribute);
+}
+
+std::vector<RegionSeed> regions_of(const io::MeshData& data) {
+  const std::vector<Point2> seeds = points_of(data.region_points);
+  std::vector<RegionSeed> regions(seeds.size());
+  for (std::size_t r = 0; r < seeds.size(); ++r) {
+    const double attribute = r < data.region_attributes.size() ? data.region_attributes[r] : 0.0;
+    regions[r] = {seeds[r], label_of_attribute(attribute, r)};
+  }
+  return regions;
+}
+
+}  // namespace
+
+PlanarDomain planar_domain_from_mesh_data(const io::MeshData& data) {
+  if (data.dimension != 2) {
+    refuse(DomainProblemKind::wrong_dimension,
+           "a planar domain needs 2D points, the file has dimension " + std::to_string(data.dimension));
+  }
+  if (data.segment_count() == 0) {
+    refuse(DomainProblemKind::no_segments, "the file has no segments: nothing bounds a region");
+  }
+  PlanarDomain domain;
+  domain.points = points_of(data.coordinates);
+  if (data.point_labels.size() == domain.points.size()) domain.point_labels = data.point_labels;
+  const std::size_t n = domain.points.size();
+  for (std::uint32_t s = 0; s < data.segment_count(); ++s) {
+    const io::Index a = data.segments[2 * s];
+    const io::Index b = data.segments[2 * s + 1];
+    for (const io::Index v : {a, b}) {
+      if (v >= n) {
+        refuse(DomainProblemKind::vertex_index_out_of_range,
+               "segment " + std::to_string(s) + " names vertex " + std::to_string(v) +
+                   " (0-based), but the file has only " + std::to_string(n) + " points",
+               {s});
+      }
+    }
+    const io::Label label = s < data.segment_labels.size() ? data.segment_labels[s] : 0;
+    domain.segments.push_back({a, b, label});
+  }
+  domain.holes = points_of(data.holes);
+  domain.regions = regions_of(data);
+  return domain;
+}
+
+io::MeshData to_mesh_data(const PlanarDomain& domain) {
+  io::MeshData data;
+  data.dimension = 2;
+  for (const Point2& p : domain.points) {
+    data.coordinates.push_back(p.x);
+    data.coordinates.push_back(p.y);
+  }
+  data.point_labels = domain.point_labels;
+  for (const DomainSegment& s : domain.segments) {
+    data.segments.push_back(s.a);
+    data.segments.push_back(s.b);
+    data.segment_labels.push_back(s.label);
+  }
+  for (const Point2& h : domain.holes) {
+    data.holes.push_back(h.x);
+    data.holes.push_back(h.y);
+  }
+  for (const RegionSeed& r : domain.regions) {
+    data.region_points.push_back(r.point.x);
+    data.region_points.push_back(r.point.y);
+    data.region_attributes.push_back(static_cast<double>(r.label));
+  }
+  return data;
+}
+
+}  // namespace certimesh::generators
