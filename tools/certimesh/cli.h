@@ -32,6 +32,24 @@ struct CheckOptions {
 /// Returns 0 valid, 1 invalid (first offending element or facet named), 2 unreadable input.
 int run_check(const CheckOptions& options);
 
+struct MeshOptions {
+  std::string domain;        // a .poly file, or builtin:plate | builtin:square | builtin:two-holes
+  std::string output;        // the mesh; format by extension (.mesh, .msh, .vtu, .node)
+  std::string certificate;   // empty: no JSON certificate
+  std::string svg;           // empty: no picture
+  double size = 0.0;         // --size H; 0: automatic from the boundary
+  double gamma = 1.0;        // --gamma G, the growth factor of automatic sizing
+  bool delaunay = false;     // --algorithm delaunay (default: front)
+  bool improve = true;       // --no-improve turns the local-modification stage off
+  bool quiet = false;        // --quiet: no progress, summary only
+};
+
+/// `certimesh mesh DOMAIN -o OUT ...`: meshes DOMAIN, certifies the mesh with the independent
+/// checker and writes it (and the certificate and picture when asked) only if it is valid.
+/// Returns 0 written, 1 invalid domain (every problem named), 2 unreadable input or bad
+/// option, 3 internal error (a mesh that fails its certificate; nothing written).
+int run_mesh(const MeshOptions& options);
+
 /// `certimesh demo`: the classroom failures of naive floating point, and certimesh's answers.
 int run_demo();
 

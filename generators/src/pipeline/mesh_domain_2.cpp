@@ -1,0 +1,209 @@
+// The 2D pipeline (mesh_domain_2.h): validate, discretize, triangulate the domain, generate,
+// complete, improve. Each stage is a function of its own; this file only sequences them.
+#include "certimesh/generators/mesh_domain_2.h"
+
+#include <algorithm>
+#include <chrono>
+#include <stdexcept>
+
+#include "boundary_discretization.h"
+#include "certimesh/generators/advancing_front/advancing_front_2.h"
+#include "certimesh/generators/domain/domain_problem.h"
+#include "certimesh/generators/domain/domain_validation.h"
+#include "certimesh/generators/improvement/quality_improvement_2.h"
+#include "certimesh/topology/quality.h"
+#include "certimesh/topology/simplex_mesh.h"
+#include "delaunay_completion.h"
+#include "domain_triangulation.h"
+#include "refinement_stage.h"
+#include "region_labels.h"
+
+namespace certimesh::generators {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+using Triangles = std::vector<std::array<std::uint32_t, 3>>;
+
+// Times the stages (for the statistics only: no decision depends on time).
+class StageClock {
+ public:
+  explicit StageClock(std::vector<StageTiming>& out) : out_(out), start_(Clock::now()) {}
+  void lap(const char* stage) {
+    const auto now = Clock::now();
+    out_.push_back({stage, std::chrono::duration<double>(now - start_).count()});
+    start_ = now;
+  }
+
+ private:
+  std::vector<StageTiming>& out_;
+  Clock::time_point start_;
+};
+
+void refuse_if_invalid(const PlanarDomain& domain) {
+  std::vector<DomainProblem> problems = validate_domain(domain);
+  if (!problems.empty()) throw InvalidDomain(std::move(problems));
+}
+
+// Splits the boundary; a split whose rounded Steiner points would make the boundary invalid
+// (a chain that crosses a neighbour at a tiny angle) is undone for the segments involved.
+detail::DiscretizedBoundary discretize_valid_boundary(const PlanarDomain& domain, const SizePolicy& size) {
+  std::vector<std::uint8_t> keep_whole(domain.segments.size(), 0);
+  for (int round = 0;; ++round) {
+    detail::DiscretizedBoundary boundary = detail::discretize_boundary(domain, size, keep_whole);
+    if (boundary.subsegments.size() == domain.segments.size()) return boundary;  // nothing split
+    PlanarDomain split{boundary.points, {}, boundary.subsegments, {}, {}};
+    const std::vector<DomainProblem> problems = validate_domain(split);
+    if (problems.empty()) return boundary;
+    if (round == 3) throw InvalidDomain(problems);
+    for (const DomainProblem& p : problems) {
+      for (const std::uint32_t s : p.segments) keep_whole[boundary.origin[s]] = 1;
+    }
+  }
+}
+
+struct Generated {
+  std::vector<Point2> points;
+  Triangles triangles;
+  std::vector<io::Label> labels;
+  std::uint64_t completed_by_delaunay = 0;
+};
+
+Generated advancing_front_stage(const detail::DomainTriangulation& dt, const detail::DiscretizedBoundary& boundary,
+                                const MeshDomainOptions2& options, const ProgressCallback& progress,
+                                StageClock& clock) {
+  AdvancingFrontOptions front_options;
+  front_options.size = options.size;
+  AdvancingFrontResult front = advance_front_2(boundary.points, dt.front, front_options, progress);
+  clock.lap("advancing front");
+  Generated out{std::move(front.points), std::move(front.triangles), {}, 0};
+  if (!front.remaining_front.empty()) {
+    report(progress, "completion", 0, front.remaining_front.size());
+    const Triangles rest = detail::complete_by_delaunay(out.points, front.remaining_front);
+    out.completed_by_delaunay = rest.size();
+    out.triangles.insert(out.triangles.end(), rest.begin(), rest.end());
+    clock.lap("delaunay completion");
+  }
+  out.labels = detail::region_labels(out.triangles, dt.front, dt.front_region, 0);
+  return out;
+}
+
+// Improvement on the mesh model: boundary and cut edges are labelled facets, which the local
+// modifications never change.
+void improvement_stage(Generated& g, const detail::DiscretizedBoundary& boundary, const MeshDomainOptions2& options,
+                       const ProgressCallback& progress) {
+  topology::TriangleMesh2 mesh;
+  mesh.reserve(g.points.size(), g.triangles.size());
+  for (const Point2& p : g.points) mesh.add_vertex({p.x, p.y});
+  for (std::size_t t = 0; t < g.triangles.size(); ++t) {
+    const auto& v = g.triangles[t];
+    mesh.add_element({topology::VertexId{v[0]}, topology::VertexId{v[1]}, topology::VertexId{v[2]}}, g.labels[t]);
+  }
+  for (const DomainSegment& s : boundary.subsegments) {
+    mesh.set_facet_label({topology::VertexId{s.a}, topology::VertexId{s.b}}, 1);
+  }
+  ImprovementOptions2 improve;
+  improve.size = options.size;
+  if (options.target_quality > 0.0) improve.target_quality = options.target_quality;
+  improve_quality_2(mesh, improve, progress);
+  // Back to arrays; vertex ids stay (dead slots are dropped when the output is compacted).
+  g.points.assign(mesh.vertex_slot_count(), Point2{});
+  for (std::uint32_t v = 0; v < mesh.vertex_slot_count(); ++v) {
+    if (mesh.is_live(topology::VertexId{v})) {
+      const auto p = mesh.point(topology::VertexId{v});
+      g.points[v] = {p[0], p[1]};
+    }
+  }
+  g.triangles.clear();
+  g.labels.clear();
+  for (std::uint32_t e = 0; e < mesh.element_slot_count(); ++e) {
+    const topology::ElementId id{e};
+    if (!mesh.is_live(id)) continue;
+    const auto v = mesh.vertices(id);
+    g.triangles.push_back({v[0].value, v[1].value, v[2].value});
+    g.labels.push_back(mesh.label(id));
+  }
+}
+
+// The output: used vertices only, renumbered in first-use order of their ids (deterministic).
+io::MeshData to_output(const Generated& g, const detail::DiscretizedBoundary& boundary) {
+  constexpr std::uint32_t unused = UINT32_MAX;
+  std::vector<std::uint32_t> new_id(g.points.size(), unused);
+  for (std::uint32_t v = 0; v < boundary.points.size(); ++v) new_id[v] = v;  // boundary first, as given
+  std::uint32_t next = static_cast<std::uint32_t>(boundary.points.size());
+  for (const auto& t : g.triangles) {
+    for (const std::uint32_t v : t) {
+      if (new_id[v] == unused) new_id[v] = next++;
+    }
+  }
+  io::MeshData out;
+  out.dimension = 2;
+  out.coordinates.resize(2 * static_cast<std::size_t>(next));
+  for (std::uint32_t v = 0; v < g.points.size(); ++v) {
+    if (new_id[v] == unused) continue;
+    out.coordinates[2 * new_id[v]] = g.points[v].x;
+    out.coordinates[2 * new_id[v] + 1] = g.points[v].y;
+  }
+  out.triangles.reserve(3 * g.triangles.size());
+  for (const auto& t : g.triangles) {
+    for (const std::uint32_t v : t) out.triangles.push_back(new_id[v]);
+  }
+  out.triangle_labels = g.labels;
+  for (const DomainSegment& s : boundary.subsegments) {
+    out.segments.push_back(new_id[s.a]);
+    out.segments.push_back(new_id[s.b]);
+    out.segment_labels.push_back(s.label);
+  }
+  return out;
+}
+
+void quality_statistics(const io::MeshData& mesh, MeshDomainStats2& stats) {
+  stats.vertices = mesh.point_count();
+  stats.triangles = mesh.triangle_count();
+  double worst = 1.0, sum = 0.0;
+  for (std::size_t t = 0; t < mesh.triangle_count(); ++t) {
+    topology::Point2d p[3];
+    for (int i = 0; i < 3; ++i) {
+      const io::Index v = mesh.triangles[3 * t + static_cast<std::size_t>(i)];
+      p[i] = {mesh.coordinates[2 * v], mesh.coordinates[2 * v + 1]};
+    }
+    const double q = topology::triangle_quality(p[0], p[1], p[2]);
+    worst = std::min(worst, q);
+    sum += q;
+  }
+  stats.worst_quality = mesh.triangle_count() ? worst : 0.0;
+  stats.mean_quality = mesh.triangle_count() ? sum / static_cast<double>(mesh.triangle_count()) : 0.0;
+}
+
+}  // namespace
+
+MeshDomainResult2 mesh_domain_2(const PlanarDomain& domain, const MeshDomainOptions2& options,
+                                const ProgressCallback& progress) {
+  MeshDomainResult2 result;
+  StageClock clock(result.stats.timings);
+  refuse_if_invalid(domain);
+  clock.lap("validation");
+  const detail::DiscretizedBoundary boundary = discretize_valid_boundary(domain, options.size);
+  result.stats.boundary_vertices = boundary.points.size();
+  clock.lap("boundary");
+  detail::DomainTriangulation dt = detail::triangulate_domain(domain, boundary, progress);
+  clock.lap("domain triangulation");
+  Generated generated;
+  if (options.algorithm == MeshAlgorithm2::advancing_front) {
+    generated = advancing_front_stage(dt, boundary, options, progress, clock);
+  } else {
+    const detail::RefinedTriangulation refined = detail::refine_domain(dt, options.size, progress);
+    generated = Generated{refined.points, refined.triangles, refined.labels, 0};
+    clock.lap("delaunay refinement");
+  }
+  if (options.improve) {
+    improvement_stage(generated, boundary, options, progress);
+    clock.lap("improvement");
+  }
+  result.mesh = to_output(generated, boundary);
+  result.stats.completed_by_delaunay = generated.completed_by_delaunay;
+  quality_statistics(result.mesh, result.stats);
+  return result;
+}
+
+}  // namespace certimesh::generators
