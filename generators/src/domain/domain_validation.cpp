@@ -123,8 +123,10 @@ void check_duplicate_vertices(const PlanarDomain& d, ProblemList& out) {
     if (j - i > 1) {
       std::vector<std::uint32_t> ids(order.begin() + static_cast<std::ptrdiff_t>(i),
                                      order.begin() + static_cast<std::ptrdiff_t>(j));
-      const std::string message = "vertices " + id_list_text(ids) + (ids.size() > 2 ? " are all at " : " are both at ") +
-                                  point_text(d.points[order[i]]);
+      std::string message = "vertices ";
+      message += id_list_text(ids);
+      message += ids.size() > 2 ? " are all at " : " are both at ";
+      message += point_text(d.points[order[i]]);
       out.add(DomainProblemKind::duplicate_vertices, {}, std::move(ids), message);
     }
     i = j;
@@ -151,10 +153,16 @@ void check_duplicate_segments(const PlanarDomain& d, ProblemList& out) {
     if (j - i > 1) {
       std::vector<std::uint32_t> ids;
       for (std::size_t k = i; k < j; ++k) ids.push_back(keys[k].id);
-      std::string message = "segments " + id_list_text(ids) + (ids.size() > 2 ? " all join" : " both join") +
-                            " vertices " + std::to_string(keys[i].lo) + " and " + std::to_string(keys[i].hi);
+      // Appended piece by piece: GCC 12 warns falsely (-Wrestrict) on "literal" + string&&.
+      std::string message = "segments ";
+      message += id_list_text(ids);
+      message += ids.size() > 2 ? " all join vertices " : " both join vertices ";
+      message += std::to_string(keys[i].lo) + " and " + std::to_string(keys[i].hi);
       if (keys[i].hi < d.points.size()) {
-        message += " " + point_text(d.points[keys[i].lo]) + "-" + point_text(d.points[keys[i].hi]);
+        message += ' ';
+        message += point_text(d.points[keys[i].lo]);
+        message += '-';
+        message += point_text(d.points[keys[i].hi]);
       }
       out.add(DomainProblemKind::duplicate_segments, std::move(ids), {keys[i].lo, keys[i].hi}, message);
     }
