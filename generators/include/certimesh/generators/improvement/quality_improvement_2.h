@@ -14,6 +14,7 @@
 
 #include "certimesh/generators/progress.h"
 #include "certimesh/generators/size_policy.h"
+#include "certimesh/topology/local_modifications_2.h"
 #include "certimesh/topology/simplex_mesh.h"
 
 namespace certimesh::generators {
@@ -35,6 +36,11 @@ struct ImprovementOptions2 {
   std::uint8_t operations = all_local_operations_2;
   /// Size-aware quality (6.1.5) with this size; shape quality (2.1.3) when empty.
   SizePolicy size;
+  /// Where a node inserted on a constrained edge goes (a point of the true boundary); empty:
+  /// constrained edges are never split (local_modifications_2.h).
+  topology::BoundaryProjection2 boundary_projection;
+  /// Algorithm 33's Q0 reading (digest D §2.1).
+  topology::CollapseReference collapse_reference = topology::CollapseReference::survivors_and_removed;
 };
 
 struct ImprovementStats2 {
@@ -45,7 +51,11 @@ struct ImprovementStats2 {
   bool reached_target = false;
 };
 
-/// Improves `mesh` in place. Deterministic.
+/// Improves `mesh` in place. Deterministic. Operations are tried on the k-th worst element in
+/// this order, each on every edge or vertex of the element, the first success committed:
+/// flip, node shift, edge collapse, node deletion, insert on edge (size-neutral and cheap
+/// first; the count-changing ones last). Throws std::invalid_argument, naming the element, if
+/// some element is not strictly counterclockwise (the mesh must be valid on entry).
 ImprovementStats2 improve_quality_2(topology::TriangleMesh2& mesh, const ImprovementOptions2& options,
                                     const ProgressCallback& progress = {});
 

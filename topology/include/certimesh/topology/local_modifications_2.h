@@ -1,0 +1,94 @@
+// The five basic local modifications of a 2D triangle mesh (monograph §5.2, Algorithms 30-34;
+// digest D §2.1): insert a node on an edge, flip an edge, shift a node, collapse an edge,
+// delete a node. Each follows the same pattern:
+//   1. build the virtual replacement triangles;
+//   2. decide their validity with exact orient2d signs (every new triangle strictly
+//      counterclockwise; the elements they replace were, so the changed region keeps its
+//      boundary and is tiled exactly once);
+//   3. compare Q1 = min quality of the new triangles with Q0 = min quality of the old ones;
+//   4. commit iff Q1 > Q0 strictly; otherwise leave the mesh exactly as it was.
+// Qualities are approximate (doubles); validity is exact.
+//
+// The boundary trace is kept: a constrained edge -- an open (boundary) facet, an interior
+// facet with facet_label != 0 (cut, interface), or an edge between elements of different
+// labels -- is never flipped or collapsed, and is split only when a boundary projection is
+// given; a vertex on a constrained edge never moves and is never deleted. An edge collapse may
+// still merge a free vertex INTO a trace vertex, which stays where it is. Operations that would
+// create a duplicate edge or a non-manifold star (the link condition) are refused.
+//
+// The mesh must be valid and counterclockwise (every element positive) on entry; each operation
+// returns the elements it removed and added so that a caller can keep its own order of
+// elements (Algorithm 35, generators/improvement) up to date.
+#pragma once
+
+#include <functional>
+#include <optional>
+#include <vector>
+
+#include "certimesh/topology/quality.h"
+#include "certimesh/topology/simplex_mesh.h"
+
+namespace certimesh::topology {
+
+/// The quality being optimised, of a counterclockwise triangle (a, b, c): e.g. the shape
+/// quality (2.1.3) or the size-aware quality (6.1.5). Only compared, never used for validity.
+using TriangleQualityFunction2 = std::function<double(const Point2d&, const Point2d&, const Point2d&)>;
+
+/// Where a new vertex on the constrained edge (a, b) goes, given the midpoint of the edge:
+/// a point of the true boundary (the monograph's F((t1 + t2) / 2)). The operation then checks
+/// with exact signs that the point gives valid triangles (Lemma 5.2.2).
+using BoundaryProjection2 = std::function<Point2d(VertexId a, VertexId b, const Point2d& midpoint)>;
+
+/// Algorithm 33's Q0 as printed covers only the triangles that survive the collapse; the
+/// alternative reading also counts the two triangles on the collapsed edge (digest D §2.1).
+/// Both keep the mesh's worst quality from decreasing.
+enum class CollapseReference {
+  survivors_only,          // Q0 = min over the surviving triangles in their old positions
+  survivors_and_removed,   // Q0 also over the two triangles that vanish
+};
+
+struct LocalModificationOptions2 {
+  TriangleQualityFunction2 quality;  // required
+  BoundaryProjection2 boundary_projection;  // empty: constrained edges are never split
+  CollapseReference collapse_reference = CollapseReference::survivors_and_removed;
+};
+
+/// What a committed operation changed. A node shift keeps the element ids of the star: they
+/// appear in both lists (their qualities changed).
+struct LocalChange2 {
+  std::vector<ElementId> removed;
+  std::vector<ElementId> added;
+};
+
+/// Algorithm 30: a node at the midpoint of edge `local_edge` (the facet opposite that local
+/// vertex) of `element`, the two (or, on a boundary edge, one) triangles split in two.
+std::optional<LocalChange2> try_insert_on_edge(TriangleMesh2& mesh, ElementId element, int local_edge,
+                                               const LocalModificationOptions2& options);
+
+/// Algorithm 31: replace the edge by the other diagonal of its strictly convex quadrilateral.
+std::optional<LocalChange2> try_flip(TriangleMesh2& mesh, ElementId element, int local_edge,
+                                     const LocalModificationOptions2& options);
+
+/// Algorithm 32: move the free vertex v along the forward-difference gradient of the worst
+/// quality of its star, as far as a step search finds best inside the star's kernel.
+std::optional<LocalChange2> try_node_shift(TriangleMesh2& mesh, VertexId v,
+                                           const LocalModificationOptions2& options);
+
+/// Algorithm 33: merge the edge's endpoints at its midpoint (at the trace endpoint when one
+/// endpoint is on the trace; never when both are).
+std::optional<LocalChange2> try_edge_collapse(TriangleMesh2& mesh, ElementId element, int local_edge,
+                                              const LocalModificationOptions2& options);
+
+/// Algorithm 34: remove the free interior vertex v and fill its star with the fan from one of
+/// its link vertices (each tried in link order; the first that improves is kept).
+std::optional<LocalChange2> try_node_deletion(TriangleMesh2& mesh, VertexId v,
+                                              const LocalModificationOptions2& options);
+
+/// Whether the edge opposite local vertex `local_edge` of `element` is constrained (see above).
+bool is_constrained_edge(const TriangleMesh2& mesh, ElementId element, int local_edge);
+
+/// Whether v may not move or be deleted: it lies on a constrained edge, or its star is not a
+/// single fan connected through edges (a pinched vertex).
+bool is_trace_vertex(const TriangleMesh2& mesh, VertexId v);
+
+}  // namespace certimesh::topology

@@ -1,0 +1,80 @@
+// Algorithm 33: edge collapse (local_modifications_2.h).
+//
+// The endpoints a, b of an unconstrained edge merge: at the midpoint when both are free, at
+// the trace endpoint (which stays put) when one is on the trace, never when both are -- an
+// interior edge between two trace vertices would pinch the domain. The two triangles on the
+// edge vanish; every other triangle of the two stars must stay strictly counterclockwise
+// with the merged vertex, decided exactly. The link condition (the common neighbours of a and
+// b are exactly the two apexes of the edge) refuses duplicate edges and non-manifold stars.
+#include <algorithm>
+#include <limits>
+
+#include "local_geometry_2.h"
+
+namespace certimesh::topology {
+
+namespace {
+
+std::vector<VertexId> sorted_link(const local::OrderedStar2& star) {
+  std::vector<VertexId> link = star.link;
+  std::sort(link.begin(), link.end());
+  return link;
+}
+
+bool link_condition_holds(const local::OrderedStar2& star_a, const local::OrderedStar2& star_b,
+                          VertexId c, VertexId d) {
+  const auto link_a = sorted_link(star_a), link_b = sorted_link(star_b);
+  std::vector<VertexId> common;
+  std::set_intersection(link_a.begin(), link_a.end(), link_b.begin(), link_b.end(), std::back_inserter(common));
+  std::vector<VertexId> apexes{std::min(c, d), std::max(c, d)};
+  return common == apexes;
+}
+
+}  // namespace
+
+std::optional<LocalChange2> try_edge_collapse(TriangleMesh2& mesh, ElementId element, int local_edge,
+                                              const LocalModificationOptions2& options) {
+  if (is_constrained_edge(mesh, element, local_edge)) return std::nullopt;
+  const auto vs = mesh.vertices(element);
+  const VertexId c = vs[static_cast<std::size_t>(local_edge)];
+  VertexId kept = vs[static_cast<std::size_t>((local_edge + 1) % 3)];
+  VertexId gone = vs[static_cast<std::size_t>((local_edge + 2) % 3)];
+  const ElementId across = mesh.neighbour(element, local_edge);
+  const VertexId d = mesh.vertices(across)[static_cast<std::size_t>(mesh.mirror_facet(element, local_edge))];
+  const bool kept_on_trace = is_trace_vertex(mesh, kept), gone_on_trace = is_trace_vertex(mesh, gone);
+  if (kept_on_trace && gone_on_trace) return std::nullopt;
+  if (gone_on_trace) std::swap(kept, gone);
+  const auto star_kept = local::ordered_star(mesh, kept);
+  const auto star_gone = local::ordered_star(mesh, gone);
+  if (!star_kept || !star_gone || !link_condition_holds(*star_kept, *star_gone, c, d))
+    return std::nullopt;
+  const Point2d merged = (kept_on_trace || gone_on_trace)
+                             ? mesh.point(kept)
+                             : local::midpoint(mesh.point(kept), mesh.point(gone));
+
+  std::vector<ElementId> removed{element, across};
+  std::vector<local::VirtualTriangle> added;
+  double q0 = options.collapse_reference == CollapseReference::survivors_and_removed
+                  ? std::min(local::quality_of(mesh, element, options), local::quality_of(mesh, across, options))
+                  : std::numeric_limits<double>::infinity();
+  double q1 = std::numeric_limits<double>::infinity();
+  for (const auto* star : {&*star_kept, &*star_gone})
+    for (const ElementId e : star->elements) {
+      if (e == element || e == across) continue;
+      removed.push_back(e);
+      q0 = std::min(q0, local::quality_of(mesh, e, options));
+      auto t = local::virtual_triangle(mesh, mesh.vertices(e), mesh.label(e));
+      for (std::size_t i = 0; i < 3; ++i)
+        if (t.vertices[i] == kept || t.vertices[i] == gone) t.vertices[i] = kept, t.points[i] = merged;
+      if (!local::is_positive(t)) return std::nullopt;
+      q1 = std::min(q1, local::quality_of(t, options));
+      added.push_back(t);
+    }
+  if (!(q1 > q0)) return std::nullopt;
+  auto change = local::replace_elements(mesh, removed, added);
+  mesh.remove_vertex(gone);
+  mesh.move_vertex(kept, merged);
+  return change;
+}
+
+}  // namespace certimesh::topology

@@ -1,0 +1,148 @@
+// Algorithm 32: node shift (local_modifications_2.h).
+//
+// The worst quality of the star, Q_σ(x), is maximised along one forward-difference gradient
+// direction (the monograph does one direction and one 1-D search per call, not an iteration:
+// the neighbours keep moving anyway). Along a ray each triangle's shape quality |S|/P² is
+// quasi-concave in the step (|S| is affine and positive inside the kernel, P² convex), so the
+// minimum over the star is quasi-concave too and a golden-section search finds its maximum;
+// with the size-aware quality it is a good heuristic. Every trial point is checked exactly:
+// all star triangles strictly counterclockwise (the kernel of the star, digest D §2.1).
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numbers>
+
+#include "local_geometry_2.h"
+
+namespace certimesh::topology {
+
+namespace {
+
+constexpr double sqrt_epsilon = 1.4901161193847656e-08;  // √ε_mach = 2^-26
+constexpr double invalid = -1.0;
+constexpr int golden_section_steps = 40;
+
+class StarAtPosition {
+ public:
+  StarAtPosition(const TriangleMesh2& mesh, VertexId v, const local::OrderedStar2& star,
+                 const LocalModificationOptions2& options)
+      : options_(options) {
+    for (const ElementId e : star.elements) {
+      triangles_.push_back(local::virtual_triangle(mesh, mesh.vertices(e), mesh.label(e)));
+      moving_.push_back(static_cast<std::size_t>(local::local_index(mesh, e, v)));
+    }
+  }
+
+  /// Q_σ with v at x, without the validity check (for the finite differences).
+  double raw_quality(const Point2d& x) {
+    double q = std::numeric_limits<double>::infinity();
+    for (std::size_t k = 0; k < triangles_.size(); ++k) {
+      triangles_[k].points[moving_[k]] = x;
+      q = std::min(q, local::quality_of(triangles_[k], options_));
+    }
+    return q;
+  }
+
+  /// Q_σ with v at x, or `invalid` when some star triangle is not strictly counterclockwise.
+  double quality(const Point2d& x) {
+    if (!std::isfinite(x[0]) || !std::isfinite(x[1])) return invalid;
+    const double q = raw_quality(x);
+    for (const auto& t : triangles_)
+      if (!local::is_positive(t)) return invalid;
+    return q;
+  }
+
+  /// The largest step along g before some triangle's (affine) area reaches zero, estimated in
+  /// double: only a bound for the search, whose every point is checked exactly.
+  double step_bound(const Point2d& x, const Point2d& g) {
+    double bound = std::numeric_limits<double>::infinity();
+    for (std::size_t k = 0; k < triangles_.size(); ++k) {
+      const double at_0 = twice_area(k, x);
+      const double at_1 = twice_area(k, {x[0] + g[0], x[1] + g[1]});
+      const double slope = at_1 - at_0;
+      if (slope < 0.0) bound = std::min(bound, at_0 / -slope);
+    }
+    return bound;
+  }
+
+ private:
+  double twice_area(std::size_t k, const Point2d& x) {
+    auto& p = triangles_[k].points;
+    p[moving_[k]] = x;
+    return (p[1][0] - p[0][0]) * (p[2][1] - p[0][1]) - (p[2][0] - p[0][0]) * (p[1][1] - p[0][1]);
+  }
+
+  const LocalModificationOptions2& options_;
+  std::vector<local::VirtualTriangle> triangles_;
+  std::vector<std::size_t> moving_;
+};
+
+double distance(const Point2d& p, const Point2d& q) { return std::hypot(q[0] - p[0], q[1] - p[1]); }
+
+// The finite-difference increment (5.2.2): √ε_mach relative to the star's shortest edge (the
+// monograph's absolute √ε is not scale-invariant), at most 1 % of that edge, and large enough
+// to change the coordinate.
+double difference_step(const TriangleMesh2& mesh, VertexId v, const local::OrderedStar2& star) {
+  const Point2d p = mesh.point(v);
+  double shortest = std::numeric_limits<double>::infinity();
+  for (std::size_t k = 0; k < star.link.size(); ++k) {
+    const Point2d a = mesh.point(star.link[k]);
+    shortest = std::min({shortest, distance(p, a),
+                         distance(a, mesh.point(star.link[(k + 1) % star.link.size()]))});
+  }
+  const double magnitude = std::max(std::abs(p[0]), std::abs(p[1]));
+  return std::min(std::max(sqrt_epsilon * shortest, 0x1p-40 * magnitude), shortest / 100.0);
+}
+
+}  // namespace
+
+std::optional<LocalChange2> try_node_shift(TriangleMesh2& mesh, VertexId v,
+                                           const LocalModificationOptions2& options) {
+  if (is_trace_vertex(mesh, v)) return std::nullopt;
+  const auto star = local::ordered_star(mesh, v);
+  StarAtPosition at(mesh, v, *star, options);
+  const Point2d p = mesh.point(v);
+  const double q0 = at.quality(p);
+  if (q0 == invalid) return std::nullopt;
+  const double delta = difference_step(mesh, v, *star);
+  const Point2d gradient{(at.raw_quality({p[0] + delta, p[1]}) - q0) / delta,
+                         (at.raw_quality({p[0], p[1] + delta}) - q0) / delta};
+  if (!(gradient[0] != 0.0 || gradient[1] != 0.0) || !std::isfinite(gradient[0]) ||
+      !std::isfinite(gradient[1]))
+    return std::nullopt;
+  const double tau_max = at.step_bound(p, gradient);
+  if (!(tau_max > 0.0) || !std::isfinite(tau_max)) return std::nullopt;
+
+  // Golden-section search for the best step in [0, tau_max), keeping the best valid point seen.
+  const auto position = [&](double tau) { return Point2d{p[0] + tau * gradient[0], p[1] + tau * gradient[1]}; };
+  constexpr double ratio = std::numbers::phi - 1.0;
+  double lo = 0.0, hi = tau_max;
+  double x1 = hi - ratio * (hi - lo), x2 = lo + ratio * (hi - lo);
+  double f1 = at.quality(position(x1)), f2 = at.quality(position(x2));
+  double best_tau = 0.0, best_q = q0;
+  const auto consider = [&](double tau, double q) {
+    if (q > best_q) best_tau = tau, best_q = q;
+  };
+  consider(x1, f1);
+  consider(x2, f2);
+  for (int step = 0; step < golden_section_steps; ++step) {
+    if (f1 < f2) {
+      lo = x1, x1 = x2, f1 = f2;
+      x2 = lo + ratio * (hi - lo);
+      f2 = at.quality(position(x2));
+      consider(x2, f2);
+    } else {
+      hi = x2, x2 = x1, f2 = f1;
+      x1 = hi - ratio * (hi - lo);
+      f1 = at.quality(position(x1));
+      consider(x1, f1);
+    }
+  }
+  if (!(best_q > q0)) return std::nullopt;
+  const Point2d target = position(best_tau);
+  if (target == p) return std::nullopt;
+  mesh.move_vertex(v, target);
+  return LocalChange2{star->elements, star->elements};
+}
+
+}  // namespace certimesh::topology
