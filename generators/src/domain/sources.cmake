@@ -4,4 +4,6 @@ target_sources(certimesh_generators PRIVATE
   ${CMAKE_CURRENT_LIST_DIR}/domain_text.cpp
   ${CMAKE_CURRENT_LIST_DIR}/domain_validation.cpp
   ${CMAKE_CURRENT_LIST_DIR}/domain_mesh_data.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/curves_2.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/default_domains.cpp
 )
