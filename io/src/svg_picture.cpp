@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdio>
 #include <limits>
+#include <string>
 
 #include "certimesh/io/format_error.h"
 #include "certimesh/io/mesh_file.h"
@@ -60,6 +61,12 @@ void append(std::string& out, const char* format, double a, double b) {
 
 std::string svg_picture(const MeshData& mesh, const SvgOptions& options) {
   if (mesh.dimension != 2) throw FormatError("svg", 0, "an SVG picture needs a 2D mesh");
+  for (const Index v : mesh.triangles) {
+    if (v >= mesh.point_count()) throw FormatError("svg", 0, "a triangle names vertex " + std::to_string(v) + ", out of range");
+  }
+  for (const Index v : mesh.segments) {
+    if (v >= mesh.point_count()) throw FormatError("svg", 0, "a segment names vertex " + std::to_string(v) + ", out of range");
+  }
   double height = 0.0;
   const Frame f = frame_of(mesh, options.width_px, height);
   const double margin = 4.0;
