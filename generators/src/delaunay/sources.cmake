@@ -1,4 +1,5 @@
 # Sources of generators/src/delaunay (included by generators/CMakeLists.txt).
 target_sources(certimesh_generators PRIVATE
-  ${CMAKE_CURRENT_LIST_DIR}/placeholder_delaunay.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/hilbert_order.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/constrained_delaunay_2.cpp
 )

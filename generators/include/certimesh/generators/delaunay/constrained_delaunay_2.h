@@ -9,6 +9,11 @@
 // Triangles are counterclockwise and non-degenerate: SoS may create flat triangles along a
 // collinear piece of the convex hull; they are never reported. Ids of input points are their
 // indices; inserted points get the next ids.
+//
+// Storage: flat arrays, three vertices and three neighbours per triangle slot, no
+// per-triangle allocation. The hull is closed by "ghost" triangles sharing one infinite
+// vertex (no far-away super-triangle, whose vertices would change the hull: digest B §2.3);
+// they are internal and never reported.
 #pragma once
 
 #include <array>
@@ -55,18 +60,20 @@ class ConstrainedDelaunay2 {
   /// up point location.
   VertexId insert_point(const Point2& p, TriangleId hint = none);
 
-  std::size_t vertex_count() const noexcept;
-  const Point2& point(VertexId v) const;
+  std::size_t vertex_count() const noexcept { return points_.size(); }
+  const Point2& point(VertexId v) const { return points_[v]; }
 
   /// Triangle slots: ids in [0, triangle_slot_count()) that are live are real triangles.
-  std::size_t triangle_slot_count() const noexcept;
+  std::size_t triangle_slot_count() const noexcept { return flags_.size(); }
   bool is_live(TriangleId t) const;
   /// Counterclockwise vertices of a live triangle.
-  std::array<VertexId, 3> vertices(TriangleId t) const;
+  std::array<VertexId, 3> vertices(TriangleId t) const {
+    return {corner_[3 * std::size_t{t}], corner_[3 * std::size_t{t} + 1], corner_[3 * std::size_t{t} + 2]};
+  }
   /// The live triangle across the edge opposite local vertex i, or `none` (hull).
   TriangleId neighbour(TriangleId t, int i) const;
   /// Whether the edge opposite local vertex i is constrained.
-  bool is_constrained(TriangleId t, int i) const;
+  bool is_constrained(TriangleId t, int i) const { return (flags_[t] >> i) & 1u; }
   /// Some live triangle incident to v, or `none`.
   TriangleId incident_triangle(VertexId v) const;
 
@@ -79,13 +86,53 @@ class ConstrainedDelaunay2 {
   /// The live triangles, in a deterministic order.
   std::vector<std::array<VertexId, 3>> triangles() const;
 
-  ~ConstrainedDelaunay2();
-  ConstrainedDelaunay2(ConstrainedDelaunay2&&) noexcept;
-  ConstrainedDelaunay2& operator=(ConstrainedDelaunay2&&) noexcept;
+  /// The slot of a triangle (live, flat or ghost) containing p in the perturbed sense, found
+  /// by a walk from `hint`; `none` when the triangulation is empty. Ghost slots mean p lies
+  /// outside the hull. Used by classify() and the refinement.
+  TriangleId locate(const Point2& p, TriangleId hint = none) const;
+  /// Whether slot t is a ghost (hull) triangle; its ghost corner is `none`.
+  bool is_ghost(TriangleId t) const { return (flags_[t] & ghost_flag) != 0; }
 
  private:
-  struct Impl;
-  Impl* impl_;
+  static constexpr std::uint8_t dead_flag = 1u << 3;
+  static constexpr std::uint8_t ghost_flag = 1u << 4;
+  static constexpr std::uint8_t constrained_mask = 0x7;
+
+  struct BoundaryEdge {
+    VertexId a, b;         // counterclockwise as seen from the cavity
+    std::uint32_t outer;   // the half-edge (3 * slot + local) across, outside the cavity
+    bool constrained;
+  };
+  enum class Walk { inside, on_vertex };
+
+  void build(std::span<const Point2> input, const ProgressCallback& progress);
+  void make_first_triangle(VertexId a, VertexId b, VertexId c);
+  void insert_vertex(VertexId v, TriangleId start, bool respect_constraints);
+  TriangleId walk(const Point2& p, TriangleId start, VertexId* equal_vertex) const;
+  bool in_circle(TriangleId t, const Point2& p, VertexId pid) const;
+  TriangleId new_slot();
+  void link(std::uint32_t half_edge_a, std::uint32_t half_edge_b);
+  std::uint32_t find_half_edge(VertexId u, VertexId v) const;
+  void flip(std::uint32_t half_edge);
+  void restore_delaunay(std::vector<std::array<VertexId, 2>> edges);
+  std::vector<std::array<VertexId, 2>> crossing_edges(VertexId a, VertexId b) const;
+  [[noreturn]] void throw_duplicate(VertexId a, VertexId b) const;
+  const Point2& pt(VertexId v) const { return points_[v]; }
+
+  std::vector<Point2> points_;
+  std::vector<VertexId> corner_;          // 3 per slot; `none` is the ghost vertex
+  std::vector<std::uint32_t> adjacent_;   // 3 per slot: the half-edge across, 3 * slot + local
+  std::vector<std::uint8_t> flags_;       // bits 0-2 constrained edges, dead, ghost
+  std::vector<TriangleId> vertex_triangle_;
+  std::vector<TriangleId> free_slots_;
+  TriangleId last_ = none;                // where the next walk starts
+  // Scratch of insert_vertex, kept to avoid reallocation.
+  std::vector<std::uint32_t> mark_;       // 2 * epoch: in the cavity, 2 * epoch + 1: outside
+  std::uint32_t epoch_ = 0;
+  std::vector<TriangleId> cavity_, stack_;
+  std::vector<BoundaryEdge> boundary_;
+  std::vector<TriangleId> start_of_;      // new triangle starting at a boundary vertex
+  TriangleId ghost_start_ = none;
 };
 
 }  // namespace certimesh::generators
