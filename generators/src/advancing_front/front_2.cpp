@@ -1,0 +1,57 @@
+#include "front_2.h"
+
+#include <algorithm>
+
+namespace certimesh::generators::advancing_front_detail {
+
+void Front2::reserve(std::size_t vertices, std::size_t edges) {
+  edges_.reserve(edges);
+  first_out_.reserve(vertices);
+  heap_.reserve(edges);
+}
+
+void Front2::grow_vertices(std::size_t count) {
+  if (first_out_.size() < count) first_out_.resize(count, no_id);
+}
+
+bool Front2::after(const HeapEntry& x, const HeapEntry& y) {
+  if (x.length2 != y.length2) return x.length2 > y.length2;
+  if (x.a != y.a) return x.a > y.a;
+  return x.b > y.b;
+}
+
+std::uint32_t Front2::insert(std::uint32_t a, std::uint32_t b, double length2) {
+  const auto id = static_cast<std::uint32_t>(edges_.size());
+  edges_.push_back(Edge{a, b, first_out_[a], true});
+  first_out_[a] = id;
+  heap_.push_back(HeapEntry{length2, a, b, id});
+  std::push_heap(heap_.begin(), heap_.end(), after);
+  ++live_;
+  return id;
+}
+
+void Front2::erase(std::uint32_t e) {
+  Edge& edge = edges_[e];
+  std::uint32_t* link = &first_out_[edge.a];
+  while (*link != e) link = &edges_[*link].next_out;
+  *link = edge.next_out;
+  edge.alive = false;
+  edge.next_out = no_id;
+  --live_;
+}
+
+std::uint32_t Front2::find(std::uint32_t a, std::uint32_t b) const {
+  for (std::uint32_t e = first_out_[a]; e != no_id; e = edges_[e].next_out)
+    if (edges_[e].b == b) return e;
+  return no_id;
+}
+
+std::uint32_t Front2::shortest() {
+  while (!heap_.empty() && !edges_[heap_.front().edge].alive) {
+    std::pop_heap(heap_.begin(), heap_.end(), after);
+    heap_.pop_back();
+  }
+  return heap_.empty() ? no_id : heap_.front().edge;
+}
+
+}  // namespace certimesh::generators::advancing_front_detail
