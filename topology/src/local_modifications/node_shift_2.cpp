@@ -11,6 +11,8 @@
 #include <cmath>
 #include <limits>
 #include <numbers>
+#include <tuple>
+#include <utility>
 
 #include "local_geometry_2.h"
 
@@ -94,27 +96,12 @@ double difference_step(const TriangleMesh2& mesh, VertexId v, const local::Order
   return std::min(std::max(sqrt_epsilon * shortest, 0x1p-40 * magnitude), shortest / 100.0);
 }
 
-}  // namespace
-
-std::optional<LocalChange2> try_node_shift(TriangleMesh2& mesh, VertexId v,
-                                           const LocalModificationOptions2& options) {
-  if (is_trace_vertex(mesh, v)) return std::nullopt;
-  const auto star = local::ordered_star(mesh, v);
-  StarAtPosition at(mesh, v, *star, options);
-  const Point2d p = mesh.point(v);
-  const double q0 = at.quality(p);
-  if (q0 == invalid) return std::nullopt;
-  const double delta = difference_step(mesh, v, *star);
-  const Point2d gradient{(at.raw_quality({p[0] + delta, p[1]}) - q0) / delta,
-                         (at.raw_quality({p[0], p[1] + delta}) - q0) / delta};
-  if (!(gradient[0] != 0.0 || gradient[1] != 0.0) || !std::isfinite(gradient[0]) ||
-      !std::isfinite(gradient[1]))
-    return std::nullopt;
-  const double tau_max = at.step_bound(p, gradient);
-  if (!(tau_max > 0.0) || !std::isfinite(tau_max)) return std::nullopt;
-
-  // Golden-section search for the best step in [0, tau_max), keeping the best valid point seen.
-  const auto position = [&](double tau) { return Point2d{p[0] + tau * gradient[0], p[1] + tau * gradient[1]}; };
+// The best valid step along `direction` by golden-section search in [0, tau_max): the step
+// and Q_σ there (step 0 and q0 when nothing beats q0).
+std::pair<double, double> search_along(StarAtPosition& at, const Point2d& p, const Point2d& direction, double q0) {
+  const double tau_max = at.step_bound(p, direction);
+  if (!(tau_max > 0.0) || !std::isfinite(tau_max)) return {0.0, q0};
+  const auto position = [&](double tau) { return Point2d{p[0] + tau * direction[0], p[1] + tau * direction[1]}; };
   constexpr double ratio = std::numbers::phi - 1.0;
   double lo = 0.0, hi = tau_max;
   double x1 = hi - ratio * (hi - lo), x2 = lo + ratio * (hi - lo);
@@ -138,8 +125,39 @@ std::optional<LocalChange2> try_node_shift(TriangleMesh2& mesh, VertexId v,
       consider(x1, f1);
     }
   }
-  if (!(best_q > q0)) return std::nullopt;
-  const Point2d target = position(best_tau);
+  return {best_tau, best_q};
+}
+
+bool usable(const Point2d& g) {
+  return (g[0] != 0.0 || g[1] != 0.0) && std::isfinite(g[0]) && std::isfinite(g[1]);
+}
+
+}  // namespace
+
+std::optional<LocalChange2> try_node_shift(TriangleMesh2& mesh, VertexId v,
+                                           const LocalModificationOptions2& options) {
+  if (is_trace_vertex(mesh, v)) return std::nullopt;
+  const auto star = local::ordered_star(mesh, v);
+  StarAtPosition at(mesh, v, *star, options);
+  const Point2d p = mesh.point(v);
+  const double q0 = at.quality(p);
+  if (q0 == invalid) return std::nullopt;
+  const double delta = difference_step(mesh, v, *star);
+  const auto q = [&](double dx, double dy) { return at.raw_quality({p[0] + dx, p[1] + dy}); };
+  // The monograph's forward differences (5.2.2) first. Where the two worst triangles trade
+  // places (a kink of the min, e.g. a star symmetric about v), the forward difference can point
+  // where the min falls; the central difference then gives the ascent direction.
+  const Point2d forward{(q(delta, 0) - q0) / delta, (q(0, delta) - q0) / delta};
+  Point2d direction = forward;
+  auto [tau, q1] = usable(forward) ? search_along(at, p, forward, q0) : std::pair{0.0, q0};
+  if (!(q1 > q0)) {
+    const Point2d central{(q(delta, 0) - q(-delta, 0)) / (2 * delta), (q(0, delta) - q(0, -delta)) / (2 * delta)};
+    if (!usable(central)) return std::nullopt;
+    direction = central;
+    std::tie(tau, q1) = search_along(at, p, central, q0);
+  }
+  if (!(q1 > q0)) return std::nullopt;
+  const Point2d target{p[0] + tau * direction[0], p[1] + tau * direction[1]};
   if (target == p) return std::nullopt;
   mesh.move_vertex(v, target);
   return LocalChange2{star->elements, star->elements};
