@@ -74,8 +74,14 @@ ConstrainedDelaunay2::ConstrainedDelaunay2(std::span<const Point2> points, const
 }
 
 void ConstrainedDelaunay2::throw_duplicate(VertexId a, VertexId b) const {
-  throw DelaunayError("delaunay: points " + std::to_string(std::min(a, b)) + " and " +
-                      std::to_string(std::max(a, b)) + " are the same point " + describe(points_[a]));
+  const VertexId ea = external_[a], eb = external_[b];
+  throw DelaunayError("delaunay: points " + std::to_string(std::min(ea, eb)) + " and " +
+                      std::to_string(std::max(ea, eb)) + " are the same point " + describe(points_[a]));
+}
+
+std::string ConstrainedDelaunay2::constraint_name(VertexId a, VertexId b) const {
+  return "constraint " + std::to_string(external_[a]) + "-" + std::to_string(external_[b]) + " " +
+         describe(pt(a)) + "-" + describe(pt(b));
 }
 
 void ConstrainedDelaunay2::build(std::span<const Point2> input, const ProgressCallback& progress) {
@@ -83,10 +89,18 @@ void ConstrainedDelaunay2::build(std::span<const Point2> input, const ProgressCa
     if (!std::isfinite(input[i].x) || !std::isfinite(input[i].y))
       throw DelaunayError("delaunay: point " + std::to_string(i) + " " + describe(input[i]) + " is not finite");
   if (input.size() >= ghost) throw DelaunayError("delaunay: too many points");
-  points_.assign(input.begin(), input.end());
+  // Internal ids follow the insertion order.
+  external_ = detail::hilbert_order(input);
+  internal_.assign(input.size(), none);
+  points_.resize(input.size());
+  for (std::size_t k = 0; k < input.size(); ++k) {
+    internal_[external_[k]] = static_cast<VertexId>(k);
+    points_[k] = input[external_[k]];
+  }
   vertex_triangle_.assign(points_.size(), none);
   start_of_.assign(points_.size(), none);
-  const std::vector<std::uint32_t> order = detail::hilbert_order(points_);
+  std::vector<std::uint32_t> order(points_.size());
+  for (std::size_t k = 0; k < order.size(); ++k) order[k] = static_cast<std::uint32_t>(k);
   // The first triangle: the first two points in order and the first point off their line.
   std::size_t third = order.size();
   if (order.size() >= 2 && pt(order[0]) == pt(order[1])) throw_duplicate(order[0], order[1]);
@@ -96,7 +110,7 @@ void ConstrainedDelaunay2::build(std::span<const Point2> input, const ProgressCa
       break;
     }
   if (third == order.size()) {  // all collinear: no triangle, but duplicates are still refused
-    std::vector<std::uint32_t> sorted = order;
+    std::vector<std::uint32_t> sorted = order;  // internal ids
     std::sort(sorted.begin(), sorted.end(), [&](std::uint32_t i, std::uint32_t j) {
       return pt(i).x != pt(j).x ? pt(i).x < pt(j).x : (pt(i).y != pt(j).y ? pt(i).y < pt(j).y : i < j);
     });
@@ -125,8 +139,12 @@ ConstrainedDelaunay2::TriangleId ConstrainedDelaunay2::new_slot() {
   }
   const auto t = static_cast<TriangleId>(flags_.size());
   flags_.push_back(0);
-  corner_.insert(corner_.end(), 3, none);
-  adjacent_.insert(adjacent_.end(), 3, none);
+  if (corner_.size() < 3 * flags_.size()) {  // grown in chunks: a resize per slot is slow
+    std::size_t size = std::max<std::size_t>(2 * corner_.size(), 48);
+    if (corner_.capacity() >= 3 * flags_.size()) size = std::min(size, corner_.capacity());
+    corner_.resize(size, none);
+    adjacent_.resize(size, none);
+  }
   mark_.push_back(0);
   return t;
 }
@@ -290,7 +308,8 @@ ConstrainedDelaunay2::TriangleId ConstrainedDelaunay2::neighbour(TriangleId t, i
   return is_live(n) ? n : none;
 }
 
-ConstrainedDelaunay2::TriangleId ConstrainedDelaunay2::incident_triangle(VertexId v) const {
+ConstrainedDelaunay2::TriangleId ConstrainedDelaunay2::incident_triangle(VertexId public_v) const {
+  const VertexId v = internal_[public_v];
   const TriangleId start = vertex_triangle_[v];
   if (start == none) return none;
   TriangleId t = start;
@@ -360,16 +379,13 @@ std::vector<std::array<ConstrainedDelaunay2::VertexId, 2>> ConstrainedDelaunay2:
                                                                                               VertexId b) const {
   const Point2 &pa = pt(a), &pb = pt(b);
   auto on_segment = [&](VertexId w) {
-    throw DelaunayError("delaunay: constraint " + std::to_string(a) + "-" + std::to_string(b) + " " +
-                        describe(pa) + "-" + describe(pb) + " passes through point " + std::to_string(w) + " " +
+    throw DelaunayError("delaunay: " + constraint_name(a, b) + " passes through point " + std::to_string(external_[w]) + " " +
                         describe(pt(w)));
   };
   std::vector<std::array<VertexId, 2>> crossed;
   auto cross = [&](TriangleId t, std::uint32_t local, VertexId l, VertexId r) {
     if ((flags_[t] >> local) & 1u)
-      throw DelaunayError("delaunay: constraint " + std::to_string(a) + "-" + std::to_string(b) + " " +
-                          describe(pa) + "-" + describe(pb) + " crosses constraint " + std::to_string(l) + "-" +
-                          std::to_string(r) + " " + describe(pt(l)) + "-" + describe(pt(r)));
+      throw DelaunayError("delaunay: " + constraint_name(a, b) + " crosses " + constraint_name(l, r));
     crossed.push_back({l, r});
   };
   // The triangle around a whose wedge holds the direction of b.
@@ -391,8 +407,7 @@ std::vector<std::array<ConstrainedDelaunay2::VertexId, 2>> ConstrainedDelaunay2:
     t = adjacent_[3 * t + next_local(k)] / 3;
   } while (t != start);
   if (crossed_local == none)
-    throw DelaunayError("delaunay: constraint " + std::to_string(a) + "-" + std::to_string(b) +
-                        " leaves the triangulation");
+    throw DelaunayError("delaunay: " + constraint_name(a, b) + " leaves the triangulation");
   VertexId r = corner_[3 * t + next_local(crossed_local)], l = corner_[3 * t + prev_local(crossed_local)];
   std::uint32_t h = 3 * t + crossed_local;
   for (;;) {
@@ -400,8 +415,7 @@ std::vector<std::array<ConstrainedDelaunay2::VertexId, 2>> ConstrainedDelaunay2:
     const std::uint32_t across = adjacent_[h];
     const TriangleId n = across / 3;
     if (flags_[n] & ghost_flag)
-      throw DelaunayError("delaunay: constraint " + std::to_string(a) + "-" + std::to_string(b) +
-                          " leaves the triangulation");
+      throw DelaunayError("delaunay: " + constraint_name(a, b) + " leaves the triangulation");
     const std::uint32_t apex_local = across % 3;
     const VertexId w = corner_[across];
     if (w == b) return crossed;
@@ -418,14 +432,15 @@ std::vector<std::array<ConstrainedDelaunay2::VertexId, 2>> ConstrainedDelaunay2:
   }
 }
 
-void ConstrainedDelaunay2::insert_constraint(VertexId a, VertexId b) {
-  if (a >= points_.size() || b >= points_.size())
-    throw DelaunayError("delaunay: constraint " + std::to_string(a) + "-" + std::to_string(b) +
+void ConstrainedDelaunay2::insert_constraint(VertexId public_a, VertexId public_b) {
+  const VertexId a = public_a < internal_.size() ? internal_[public_a] : none;
+  const VertexId b = public_b < internal_.size() ? internal_[public_b] : none;
+  if (a == none || b == none)
+    throw DelaunayError("delaunay: constraint " + std::to_string(public_a) + "-" + std::to_string(public_b) +
                         " names a point that does not exist");
-  if (a == b) throw DelaunayError("delaunay: constraint " + std::to_string(a) + "-" + std::to_string(b) + " has zero length");
+  if (a == b) throw DelaunayError("delaunay: " + constraint_name(a, b) + " has zero length");
   if (flags_.empty() || vertex_triangle_[a] == none || vertex_triangle_[b] == none)
-    throw DelaunayError("delaunay: constraint " + std::to_string(a) + "-" + std::to_string(b) +
-                        ": the triangulation has no triangle (fewer than three points, or all collinear)");
+    throw DelaunayError("delaunay: " + constraint_name(a, b) + ": the triangulation has no triangle (fewer than three points, or all collinear)");
   auto mark = [&] {
     const std::uint32_t h = find_half_edge(a, b);
     if (h == none) return false;
@@ -473,6 +488,8 @@ ConstrainedDelaunay2::VertexId ConstrainedDelaunay2::insert_point(const Point2& 
       return none;
   const auto v = static_cast<VertexId>(points_.size());
   points_.push_back(p);
+  external_.push_back(v);
+  internal_.push_back(v);
   vertex_triangle_.push_back(none);
   start_of_.push_back(none);
   insert_vertex(v, t, true);

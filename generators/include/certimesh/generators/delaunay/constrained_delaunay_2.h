@@ -20,6 +20,7 @@
 #include <cstdint>
 #include <span>
 #include <stdexcept>
+#include <string>
 #include <vector>
 
 #include "certimesh/generators/domain/planar_domain.h"
@@ -61,14 +62,15 @@ class ConstrainedDelaunay2 {
   VertexId insert_point(const Point2& p, TriangleId hint = none);
 
   std::size_t vertex_count() const noexcept { return points_.size(); }
-  const Point2& point(VertexId v) const { return points_[v]; }
+  const Point2& point(VertexId v) const { return points_[internal_[v]]; }
 
   /// Triangle slots: ids in [0, triangle_slot_count()) that are live are real triangles.
   std::size_t triangle_slot_count() const noexcept { return flags_.size(); }
   bool is_live(TriangleId t) const;
   /// Counterclockwise vertices of a live triangle.
   std::array<VertexId, 3> vertices(TriangleId t) const {
-    return {corner_[3 * std::size_t{t}], corner_[3 * std::size_t{t} + 1], corner_[3 * std::size_t{t} + 2]};
+    const VertexId* c = &corner_[3 * std::size_t{t}];
+    return {external_[c[0]], external_[c[1]], external_[c[2]]};
   }
   /// The live triangle across the edge opposite local vertex i, or `none` (hull).
   TriangleId neighbour(TriangleId t, int i) const;
@@ -116,10 +118,15 @@ class ConstrainedDelaunay2 {
   void flip(std::uint32_t half_edge);
   void restore_delaunay(std::vector<std::array<VertexId, 2>> edges);
   std::vector<std::array<VertexId, 2>> crossing_edges(VertexId a, VertexId b) const;
-  [[noreturn]] void throw_duplicate(VertexId a, VertexId b) const;
+  [[noreturn]] void throw_duplicate(VertexId a, VertexId b) const;  // internal ids
+  std::string constraint_name(VertexId a, VertexId b) const;          // internal ids
   const Point2& pt(VertexId v) const { return points_[v]; }
 
-  std::vector<Point2> points_;
+  // Vertices are numbered internally in insertion (Hilbert) order, so the per-vertex arrays
+  // are read with locality; the public ids are the input indices.
+  std::vector<Point2> points_;            // by internal id
+  std::vector<VertexId> external_;        // internal id -> public id
+  std::vector<VertexId> internal_;        // public id -> internal id
   std::vector<VertexId> corner_;          // 3 per slot; `none` is the ghost vertex
   std::vector<std::uint32_t> adjacent_;   // 3 per slot: the half-edge across, 3 * slot + local
   std::vector<std::uint8_t> flags_;       // bits 0-2 constrained edges, dead, ghost
