@@ -34,7 +34,7 @@ double worst_shape_quality(const TriangleMesh2& mesh) {
   return q;
 }
 
-RC_GTEST_PROP(ImpAlgorithm35, WorstNeverDecreasesAndBudgetHolds, ()) {
+RC_GTEST_PROP(imp_Algorithm35, WorstNeverDecreasesAndBudgetHolds, ()) {
   const auto grid = jittered_grid(*rc::gen::inRange(3, 8), *rc::gen::inRange<std::uint64_t>(1, 1u << 30));
   const io::MeshData domain = fuzz::square_domain(grid);
   const io::MeshData start = fuzz::kuhn_grid(grid);
@@ -58,7 +58,7 @@ RC_GTEST_PROP(ImpAlgorithm35, WorstNeverDecreasesAndBudgetHolds, ()) {
   }
 }
 
-TEST(ImpAlgorithm35, TwoRunsAreBitIdentical) {
+TEST(imp_Algorithm35, TwoRunsAreBitIdentical) {
   const io::MeshData start = fuzz::kuhn_grid(jittered_grid(10, 77));
   ImprovementOptions2 options;
   options.size.uniform_size = 0.7;  // every operation has work to do
@@ -76,7 +76,7 @@ TEST(ImpAlgorithm35, TwoRunsAreBitIdentical) {
   EXPECT_EQ(stats[0].final_worst, stats[1].final_worst);
 }
 
-TEST(ImpAlgorithm35, PerturbedGridReachesTheTarget) {
+TEST(imp_Algorithm35, PerturbedGridReachesTheTarget) {
   // Kuhn triangles are isosceles right triangles (0.8915); jitter spoils them. Node shifts and
   // flips bring the worst back above 0.8 (the boundary stays a square grid).
   const auto grid = jittered_grid(12, 5);
@@ -98,7 +98,7 @@ TEST(ImpAlgorithm35, PerturbedGridReachesTheTarget) {
   EXPECT_TRUE(imp_testing::certify(mesh, &domain).valid);
 }
 
-TEST(ImpAlgorithm35, SizeAwareQualityRegradesAndStaysValid) {
+TEST(imp_Algorithm35, SizeAwareQualityRegradesAndStaysValid) {
   // Size 0.45 on unit cells: insertions must refine; the result is valid and better.
   const auto grid = jittered_grid(6, 9);
   const io::MeshData domain = fuzz::square_domain(grid);
@@ -115,7 +115,7 @@ TEST(ImpAlgorithm35, SizeAwareQualityRegradesAndStaysValid) {
   EXPECT_TRUE(report.valid) << report.finding.message;
 }
 
-TEST(ImpAlgorithm35, ClockwiseElementIsRefusedWithItsId) {
+TEST(imp_Algorithm35, ClockwiseElementIsRefusedWithItsId) {
   TriangleMesh2 mesh;
   const auto a = mesh.add_vertex({0, 0}), b = mesh.add_vertex({1, 0}), c = mesh.add_vertex({0, 1});
   mesh.add_element({a, c, b});

@@ -75,7 +75,7 @@ void add_constraints(TriangleMesh2& mesh, int nx) {
     if (mesh.neighbour(live[k], 0) != topology::no_element) mesh.set_facet_label(mesh.facet(live[k], 0), 9);
 }
 
-RC_GTEST_PROP(ImpLocalModifications, CommittedOperationsKeepMeshValidBoundaryAreaAndImprove, ()) {
+RC_GTEST_PROP(imp_LocalModifications, CommittedOperationsKeepMeshValidBoundaryAreaAndImprove, ()) {
   fuzz::GridSpec grid;
   grid.cells = {*rc::gen::inRange(2, 9), *rc::gen::inRange(2, 9), 1};
   grid.jitter_seed = *rc::gen::inRange<std::uint64_t>(1, 1u << 30);

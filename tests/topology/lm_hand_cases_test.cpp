@@ -81,7 +81,7 @@ std::pair<ElementId, int> edge_of(const TriangleMesh2& mesh, VertexId a, VertexI
 }
 
 // Quad L, B, R, T with the long diagonal L-R: flipping to T-B improves the shape.
-TEST(LmFlip, ConvexQuadFlipsToTheBetterDiagonal) {
+TEST(lm_Flip, ConvexQuadFlipsToTheBetterDiagonal) {
   auto b = build({{-3, 0}, {0, -1}, {3, 0}, {0, 1}}, {{0, 2, 3}, {2, 0, 1}});
   const auto o = shape_quality();
   const double q0 = worst(b.mesh, o);
@@ -98,7 +98,7 @@ TEST(LmFlip, ConvexQuadFlipsToTheBetterDiagonal) {
   EXPECT_TRUE(b.mesh.find_facet({b.v[1], b.v[3]}));
 }
 
-TEST(LmFlip, NonConvexAndDegenerateQuadsAreRefused) {
+TEST(lm_Flip, NonConvexAndDegenerateQuadsAreRefused) {
   // B = (-4, -0.1) lies beyond L: the quad is reflex at L. B = (-6, -1) is on the line T-L:
   // the quad is not strictly convex (a flipped triangle would be flat).
   for (const Point2d bottom : {Point2d{-4, -0.1}, Point2d{-6, -1}}) {
@@ -115,7 +115,7 @@ TEST(LmFlip, NonConvexAndDegenerateQuadsAreRefused) {
 const std::vector<Point2d> arrow_points{{0, 0}, {2, 0}, {0.25, 0.25}, {-1, 1}, {-1, -1}, {0.25, -0.25}};
 const std::vector<std::array<int, 3>> arrow_triangles{{0, 1, 2}, {0, 2, 3}, {0, 3, 4}, {0, 4, 5}, {0, 5, 1}};
 
-TEST(LmCollapse, CollapseThatWouldInvertATriangleIsRefused) {
+TEST(lm_Collapse, CollapseThatWouldInvertATriangleIsRefused) {
   auto b = build(arrow_points, arrow_triangles);
   // Merging the centre into w = (2, 0) (a boundary vertex, which stays put) turns
   // (centre, p1, p2) into (w, p1, p2): clockwise, as the oracle confirms.
@@ -127,7 +127,7 @@ TEST(LmCollapse, CollapseThatWouldInvertATriangleIsRefused) {
   EXPECT_EQ(b.mesh.point(b.v[0]), (Point2d{0, 0}));
 }
 
-TEST(LmCollapse, InteriorVertexMergesIntoTheBoundaryVertexWhichStaysPut) {
+TEST(lm_Collapse, InteriorVertexMergesIntoTheBoundaryVertexWhichStaysPut) {
   // A square 4 x 4 with free vertices v = (1, 1) and u = (3, 3).
   auto b = build({{0, 0}, {4, 0}, {4, 4}, {0, 4}, {1, 1}, {3, 3}},
                  {{0, 1, 4}, {1, 2, 5}, {2, 3, 5}, {3, 0, 4}, {4, 1, 5}, {4, 5, 3}});
@@ -145,7 +145,7 @@ TEST(LmCollapse, InteriorVertexMergesIntoTheBoundaryVertexWhichStaysPut) {
   EXPECT_FALSE(try_edge_collapse(c.mesh, e2, i2, perimeter_quality()));
 }
 
-TEST(LmCollapse, LinkConditionRefusesAThirdCommonNeighbour) {
+TEST(lm_Collapse, LinkConditionRefusesAThirdCommonNeighbour) {
   // Square ring around the triangle v = (1,1), w = (3,1), x = (2,3), with y = (2,1.5) inside it
   // joined to all three: v and w have the common neighbours y, z (below) and x.
   auto b = build({{0, -2}, {4, -2}, {5, 4}, {-1, 4}, {1, 1}, {3, 1}, {2, 3}, {2, 1.5}, {2, -1}},
@@ -179,10 +179,10 @@ void deletion_case(int n) {
   EXPECT_GT(worst(b.mesh, o), q0);
 }
 
-TEST(LmNodeDeletion, FiveValentVertex) { deletion_case(5); }
-TEST(LmNodeDeletion, SixValentVertex) { deletion_case(6); }
+TEST(lm_NodeDeletion, FiveValentVertex) { deletion_case(5); }
+TEST(lm_NodeDeletion, SixValentVertex) { deletion_case(6); }
 
-TEST(LmNodeDeletion, WellPlacedCentreIsKept) {
+TEST(lm_NodeDeletion, WellPlacedCentreIsKept) {
   // The centre of a regular hexagon: six equilateral triangles beat every fan.
   std::vector<Point2d> points{{0, 0}};
   std::vector<std::array<int, 3>> triangles;
@@ -195,7 +195,7 @@ TEST(LmNodeDeletion, WellPlacedCentreIsKept) {
   EXPECT_EQ(b.mesh.element_count(), 6u);
 }
 
-TEST(LmNodeShift, StaysInTheKernelOfANonConvexStar) {
+TEST(lm_NodeShift, StaysInTheKernelOfANonConvexStar) {
   auto b = build(arrow_points, arrow_triangles);
   const auto o = shape_quality();
   const mpq_class area = checked_twice_area(b.mesh);
@@ -215,9 +215,9 @@ TEST(LmNodeShift, StaysInTheKernelOfANonConvexStar) {
   EXPECT_EQ(b.mesh.point(b.v[1]), (Point2d{2, 0}));
 }
 
-TEST(LmInsert, InteriorEdgeSplitsFourWays) {
-  // Two long thin triangles on a short edge: halving the long edge... the edge (0,0)-(8,0)
-  // with apexes (4, 1) and (4, -1): splitting it gives four better triangles.
+TEST(lm_Insert, InteriorEdgeSplitsFourWays) {
+  // Two flat triangles on the long edge (0,0)-(8,0), apexes (4, 1) and (4, -1): splitting the
+  // edge at its midpoint gives four better triangles.
   auto b = build({{0, 0}, {8, 0}, {4, 1}, {4, -1}}, {{0, 1, 2}, {1, 0, 3}});
   const auto o = shape_quality();
   const mpq_class area = checked_twice_area(b.mesh);
@@ -228,7 +228,7 @@ TEST(LmInsert, InteriorEdgeSplitsFourWays) {
   EXPECT_EQ(checked_twice_area(b.mesh), area);
 }
 
-TEST(LmInsert, BoundaryEdgeOnlyWithAProjectionAndLabelsFollow) {
+TEST(lm_Insert, BoundaryEdgeOnlyWithAProjectionAndLabelsFollow) {
   auto b = build({{0, 0}, {8, 0}, {4, 1}}, {{0, 1, 2}});
   b.mesh.set_facet_label({b.v[0], b.v[1]}, 3);
   auto o = shape_quality();
@@ -255,7 +255,7 @@ TEST(LmInsert, BoundaryEdgeOnlyWithAProjectionAndLabelsFollow) {
   EXPECT_EQ(c.mesh.element_count(), 1u);
 }
 
-TEST(LmTrace, ConstrainedEdgesAndTheirVerticesStay) {
+TEST(lm_Trace, ConstrainedEdgesAndTheirVerticesStay) {
   auto b = build({{-3, 0}, {0, -1}, {3, 0}, {0, 1}}, {{0, 2, 3}, {2, 0, 1}});
   b.mesh.set_facet_label({b.v[0], b.v[2]}, 5);  // a cut along the long diagonal
   const auto [e, i] = edge_of(b.mesh, b.v[0], b.v[2]);

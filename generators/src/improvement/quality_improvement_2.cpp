@@ -106,7 +106,7 @@ ImprovementStats2 improve_quality_2(TriangleMesh2& mesh, const ImprovementOption
   require_counterclockwise(mesh);
   const auto quality = quality_function(options.size);
   const topology::LocalModificationOptions2 lm{quality, options.boundary_projection,
-                                               options.collapse_reference};
+                                               options.collapse_reference, options.minimum_shift_gain};
   improvement::QualityOrder order;
   for (std::uint32_t slot = 0; slot < mesh.element_slot_count(); ++slot)
     if (mesh.is_live(ElementId{slot})) order.insert(ElementId{slot}, element_quality(mesh, ElementId{slot}, quality));

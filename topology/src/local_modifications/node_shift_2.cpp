@@ -150,13 +150,13 @@ std::optional<LocalChange2> try_node_shift(TriangleMesh2& mesh, VertexId v,
   const Point2d forward{(q(delta, 0) - q0) / delta, (q(0, delta) - q0) / delta};
   Point2d direction = forward;
   auto [tau, q1] = usable(forward) ? search_along(at, p, forward, q0) : std::pair{0.0, q0};
-  if (!(q1 > q0)) {
+  if (!(q1 > q0 + options.minimum_shift_gain)) {
     const Point2d central{(q(delta, 0) - q(-delta, 0)) / (2 * delta), (q(0, delta) - q(0, -delta)) / (2 * delta)};
     if (!usable(central)) return std::nullopt;
     direction = central;
     std::tie(tau, q1) = search_along(at, p, central, q0);
   }
-  if (!(q1 > q0)) return std::nullopt;
+  if (!(q1 > q0 + options.minimum_shift_gain)) return std::nullopt;
   const Point2d target{p[0] + tau * direction[0], p[1] + tau * direction[1]};
   if (target == p) return std::nullopt;
   mesh.move_vertex(v, target);

@@ -41,6 +41,9 @@ struct ImprovementOptions2 {
   topology::BoundaryProjection2 boundary_projection;
   /// Algorithm 33's Q0 reading (digest D §2.1).
   topology::CollapseReference collapse_reference = topology::CollapseReference::survivors_and_removed;
+  /// The least gain of the star's worst quality for which a node shift counts (see
+  /// LocalModificationOptions2::minimum_shift_gain).
+  double minimum_shift_gain = 1e-3;
 };
 
 struct ImprovementStats2 {
