@@ -13,15 +13,15 @@ set(CERTIMESH_INSTALL_CMAKEDIR ${CMAKE_INSTALL_LIBDIR}/cmake/certimesh
 set(CERTIMESH_INSTALL_PKGCONFIGDIR ${CMAKE_INSTALL_LIBDIR}/pkgconfig
     CACHE STRING "Where certimesh.pc is installed, relative to the prefix")
 
-# The libraries, in dependency order: predicates <- io <- topology, certificate.
+# The libraries, in dependency order: predicates <- io <- topology <- generators; certificate.
 set(CERTIMESH_INSTALLED_LIBRARIES certimesh_predicates certimesh_io certimesh_topology
-                                  certimesh_certificate)
+                                  certimesh_certificate certimesh_generators)
 install(TARGETS ${CERTIMESH_INSTALLED_LIBRARIES}
         EXPORT certimeshTargets
         ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR}
         LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR}
         RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
-foreach(part predicates io topology certificate)
+foreach(part predicates io topology certificate generators)
   if(EXISTS ${PROJECT_SOURCE_DIR}/${part}/include)
     install(DIRECTORY ${PROJECT_SOURCE_DIR}/${part}/include/
             DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}
@@ -49,7 +49,7 @@ install(FILES ${PROJECT_BINARY_DIR}/certimeshConfig.cmake
 # Requires.private keeps `pkg-config --static` and the include flags right either way.
 get_target_property(_certimesh_predicates_type certimesh_predicates TYPE)
 if(_certimesh_predicates_type STREQUAL "STATIC_LIBRARY")
-  set(CERTIMESH_PC_LIBS_EXTRA " -lgmpxx -lgmp -lcrypto")
+  set(CERTIMESH_PC_LIBS_EXTRA " -lmpfr -lgmpxx -lgmp -lcrypto -lz")
 else()
   set(CERTIMESH_PC_LIBS_EXTRA "")
 endif()

@@ -37,6 +37,7 @@ struct MeshOptions {
   std::string output;        // the mesh; format by extension (.mesh, .msh, .vtu, .node)
   std::string certificate;   // empty: no JSON certificate
   std::string svg;           // empty: no picture
+  std::string save_domain;   // empty: the domain is not written (else as .poly, for check)
   double size = 0.0;         // --size H; 0: automatic from the boundary
   double gamma = 1.0;        // --gamma G, the growth factor of automatic sizing
   bool delaunay = false;     // --algorithm delaunay (default: front)
@@ -49,6 +50,11 @@ struct MeshOptions {
 /// Returns 0 written, 1 invalid domain (every problem named), 2 unreadable input or bad
 /// option, 3 internal error (a mesh that fails its certificate; nothing written).
 int run_mesh(const MeshOptions& options);
+
+/// `certimesh domain SCRIPT -o OUT.poly`: constructive geometry of planar domains
+/// (docs/domains.md). Returns 0 written, 1 bad script or invalid result, 2 unreadable script
+/// or unwritable output.
+int run_domain(const std::string& script_path, const std::string& output);
 
 /// `certimesh demo`: the classroom failures of naive floating point, and certimesh's answers.
 int run_demo();

@@ -1,6 +1,9 @@
 // certimesh: the command-line tool. Subcommands: demo, predicates. See --help.
+#include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
+#include <optional>
 #include <string>
 #include <string_view>
 
@@ -28,6 +31,15 @@ constexpr const char* kHelp =
     "                       certify MESH exactly: oriented elements, conforming facets, an\n"
     "                       embedded boundary, a single cover; with DOMAIN (.poly in 2D, a\n"
     "                       closed surface mesh in 3D) also that MESH tiles exactly DOMAIN\n"
+    "  mesh DOMAIN -o OUT [--size H] [--gamma G] [--algorithm front|delaunay]\n"
+    "       [--certificate C.json] [--svg PICTURE.svg] [--save-domain D.poly]\n"
+    "       [--no-improve] [--quiet]\n"
+    "                       mesh a 2D domain (.poly, or builtin:plate, builtin:square,\n"
+    "                       builtin:two-holes) with triangles; the mesh is certified against\n"
+    "                       the domain before anything is written (OUT: .mesh .msh .vtu .node)\n"
+    "  domain SCRIPT -o OUT.poly\n"
+    "                       constructive geometry: rectangles, discs and polygons combined\n"
+    "                       by union, difference, intersection (docs/domains.md)\n"
     "  --help, -h           this text\n"
     "  --version            the version\n"
     "\n"
@@ -50,13 +62,62 @@ constexpr const char* kHelp =
     "on stderr and nothing on stdout; processing continues.\n"
     "\n"
     "exit status: 0 success; 1 some input line was rejected (predicates), the demo found a\n"
-    "disagreement, or check found the mesh invalid; 2 usage error or unreadable input.\n";
+    "disagreement, check found the mesh invalid, or mesh found the domain invalid; 2 usage\n"
+    "error or unreadable input; 3 internal error (a generated mesh failed its certificate).\n";
 
 int usage_error(const char* fmt, const char* arg) {
   std::fputs("error: ", stderr);
   std::fprintf(stderr, fmt, arg);
   std::fputs(" (see certimesh --help)\n", stderr);
   return 2;
+}
+
+// A positive finite number, or nullopt.
+std::optional<double> positive_number(const char* text) {
+  char* end = nullptr;
+  const double value = std::strtod(text, &end);
+  if (end == text || *end != '\0' || !(value > 0.0) || !std::isfinite(value)) return std::nullopt;
+  return value;
+}
+
+int parse_and_run_mesh(int argc, char** argv) {
+  certimesh::cli::MeshOptions options;
+  for (int i = 2; i < argc; ++i) {
+    const std::string_view arg = argv[i];
+    const bool has_value = i + 1 < argc;
+    if ((arg == "-o" || arg == "--output") && has_value) {
+      options.output = argv[++i];
+    } else if (arg == "--size" && has_value) {
+      const auto h = positive_number(argv[++i]);
+      if (!h) return usage_error("mesh: --size needs a positive number, got '%s'", argv[i]);
+      options.size = *h;
+    } else if (arg == "--gamma" && has_value) {
+      const auto g = positive_number(argv[++i]);
+      if (!g || *g < 1.0) return usage_error("mesh: --gamma needs a number >= 1, got '%s'", argv[i]);
+      options.gamma = *g;
+    } else if (arg == "--algorithm" && has_value) {
+      const std::string_view a = argv[++i];
+      if (a != "front" && a != "delaunay") return usage_error("mesh: --algorithm is front or delaunay, got '%s'", argv[i]);
+      options.delaunay = a == "delaunay";
+    } else if (arg == "--certificate" && has_value) {
+      options.certificate = argv[++i];
+    } else if (arg == "--svg" && has_value) {
+      options.svg = argv[++i];
+    } else if (arg == "--save-domain" && has_value) {
+      options.save_domain = argv[++i];
+    } else if (arg == "--no-improve") {
+      options.improve = false;
+    } else if (arg == "--quiet") {
+      options.quiet = true;
+    } else if (!arg.starts_with("-") && options.domain.empty()) {
+      options.domain = argv[i];
+    } else {
+      return usage_error("mesh: unexpected argument '%s'", argv[i]);
+    }
+  }
+  if (options.domain.empty()) return usage_error("mesh needs a DOMAIN (.poly or builtin:plate)%s", "");
+  if (options.output.empty()) return usage_error("mesh needs -o OUT%s", "");
+  return certimesh::cli::run_mesh(options);
 }
 
 }  // namespace
@@ -127,6 +188,11 @@ int main(int argc, char** argv) {
     }
     if (options.mesh.empty()) return usage_error("check needs a MESH file%s", "");
     return certimesh::cli::run_check(options);
+  }
+  if (command == "mesh") return parse_and_run_mesh(argc, argv);
+  if (command == "domain") {
+    if (argc == 5 && std::string_view(argv[3]) == "-o") return certimesh::cli::run_domain(argv[2], argv[4]);
+    return usage_error("domain takes SCRIPT -o OUT.poly%s", "");
   }
   return usage_error("unknown command '%s'", argv[1]);
 }

@@ -88,6 +88,11 @@ void refuse_open_boundary(const PlanarDomain& domain, const DiscretizedBoundary&
   if (!problems.empty()) throw InvalidDomain(std::move(problems));
 }
 
+bool has_bounded_face(const ConstrainedDelaunay2& cdt) {
+  const std::vector<int> without_holes = cdt.classify({}, {});
+  return std::any_of(without_holes.begin(), without_holes.end(), [](int label) { return label >= 0; });
+}
+
 }  // namespace
 
 DomainTriangulation triangulate_domain(const PlanarDomain& domain, const DiscretizedBoundary& boundary,
@@ -96,13 +101,16 @@ DomainTriangulation triangulate_domain(const PlanarDomain& domain, const Discret
   for (const DomainSegment& s : boundary.subsegments) cdt.insert_constraint(s.a, s.b);
   std::vector<int> labels = cdt.classify(domain.holes, domain.regions);
   const SideScan scan = scan_sides(cdt, labels, boundary);
-  refuse_open_boundary(domain, boundary, scan.inside_sides);
   if (scan.front.empty()) {
+    // No bounded face at all: the segments enclose nothing (open loops). Bounded faces that
+    // the hole points all ate: an empty domain.
+    if (!has_bounded_face(cdt)) refuse_open_boundary(domain, boundary, scan.inside_sides);
     DomainProblem p;
     p.kind = DomainProblemKind::empty_domain;
     p.message = "the domain is empty: every face of the segments is unbounded or contains a hole point";
     throw InvalidDomain({std::move(p)});
   }
+  refuse_open_boundary(domain, boundary, scan.inside_sides);
   DomainTriangulation out{std::move(cdt), std::move(labels), {}, {}};
   out.front.reserve(scan.front.size());
   out.front_region.reserve(scan.front.size());

@@ -1,0 +1,139 @@
+// `certimesh mesh`: a domain in, a certified mesh out. The library meshes and reports
+// progress through a callback; this file decides what a person sees, certifies the mesh with
+// the independent checker and writes nothing unless the certificate holds.
+#include <unistd.h>
+
+#include <chrono>
+#include <cstdio>
+#include <exception>
+#include <memory>
+#include <optional>
+#include <stdexcept>
+#include <string>
+
+#include "certimesh/certificate/check_mesh.h"
+#include "certimesh/generators/delaunay/constrained_delaunay_2.h"
+#include "certimesh/generators/domain/default_domains.h"
+#include "certimesh/generators/domain/domain_problem.h"
+#include "certimesh/generators/domain/domain_validation.h"
+#include "certimesh/generators/mesh_domain_2.h"
+#include "certimesh/io/format_error.h"
+#include "certimesh/io/mesh_file.h"
+#include "certimesh/io/svg_picture.h"
+#include "cli.h"
+
+#ifndef CERTIMESH_VERSION
+#define CERTIMESH_VERSION "unknown"
+#endif
+
+namespace certimesh::cli {
+
+namespace {
+
+using generators::PlanarDomain;
+
+constexpr const char* kBuiltinPrefix = "builtin:";
+
+// The domain named on the command line: a .poly file, or one of the built-in domains.
+PlanarDomain load_domain(const std::string& name) {
+  if (name.rfind(kBuiltinPrefix, 0) == 0) {
+    const std::string which = name.substr(std::string(kBuiltinPrefix).size());
+    if (which == "plate") return generators::plate_with_holes_and_crack();
+    if (which == "square") return generators::unit_square();
+    if (which == "two-holes") return generators::square_with_two_holes();
+    throw std::invalid_argument("unknown built-in domain '" + which + "' (plate, square, two-holes)");
+  }
+  return generators::planar_domain_from_mesh_data(io::read_mesh(name));
+}
+
+// Progress on standard error, only for a person at a terminal, at most every 0.2 s.
+generators::ProgressCallback terminal_progress(bool quiet) {
+  if (quiet || !isatty(STDERR_FILENO)) return {};
+  auto last = std::make_shared<std::chrono::steady_clock::time_point>();
+  return [last](const generators::Progress& p) {
+    const auto now = std::chrono::steady_clock::now();
+    if (now - *last < std::chrono::milliseconds(200) && p.done != p.total) return;
+    *last = now;
+    if (p.total > 0) {
+      std::fprintf(stderr, "\r%-24.*s %3.0f%%", static_cast<int>(p.stage.size()), p.stage.data(),
+                   100.0 * static_cast<double>(p.done) / static_cast<double>(p.total));
+    } else {
+      std::fprintf(stderr, "\r%-24.*s %llu", static_cast<int>(p.stage.size()), p.stage.data(),
+                   static_cast<unsigned long long>(p.done));
+    }
+    std::fflush(stderr);
+  };
+}
+
+void print_summary(const generators::MeshDomainStats2& s, const certificate::Report& report) {
+  std::printf("mesh: %llu vertices (%llu on the boundary), %llu triangles",
+              static_cast<unsigned long long>(s.vertices), static_cast<unsigned long long>(s.boundary_vertices),
+              static_cast<unsigned long long>(s.triangles));
+  if (s.completed_by_delaunay > 0) {
+    std::printf(", %llu of them by the Delaunay completion", static_cast<unsigned long long>(s.completed_by_delaunay));
+  }
+  std::printf("\nquality 12*sqrt(3)*area/perimeter^2: worst %.4f, mean %.4f\n", s.worst_quality, s.mean_quality);
+  double total = 0.0;
+  for (const auto& t : s.timings) total += t.seconds;
+  std::printf("time: %.3f s (", total);
+  for (std::size_t i = 0; i < s.timings.size(); ++i) {
+    std::printf("%s%s %.3f", i ? ", " : "", s.timings[i].stage.c_str(), s.timings[i].seconds);
+  }
+  std::printf(")\ncertificate: %s\n", report.valid ? "valid, the triangles tile the domain exactly once" : "INVALID");
+}
+
+int refuse_domain(const std::string& name, const generators::InvalidDomain& e) {
+  for (const auto& p : e.problems()) std::fprintf(stderr, "error: %s: %s\n", name.c_str(), p.message.c_str());
+  if (e.problems().empty()) std::fprintf(stderr, "error: %s: %s\n", name.c_str(), e.what());
+  return 1;
+}
+
+// Writes the mesh and, when asked, its certificate and picture; each file atomically.
+void write_outputs(const MeshOptions& options, const io::MeshData& mesh, const io::MeshData& domain,
+                   const certificate::Report& report) {
+  io::write_mesh(mesh, options.output);
+  if (!options.certificate.empty()) {
+    io::write_file_atomically(options.certificate, certificate::certificate_json(report, CERTIMESH_VERSION));
+  }
+  if (!options.svg.empty()) io::write_svg_picture(mesh, options.svg);
+  if (!options.save_domain.empty()) io::write_mesh(domain, options.save_domain);
+}
+
+}  // namespace
+
+int run_mesh(const MeshOptions& options) {
+  generators::MeshDomainOptions2 mesh_options;
+  mesh_options.algorithm = options.delaunay ? generators::MeshAlgorithm2::delaunay
+                                            : generators::MeshAlgorithm2::advancing_front;
+  mesh_options.size.uniform_size = options.size;
+  mesh_options.size.growth = options.gamma;
+  mesh_options.improve = options.improve;
+  try {
+    const PlanarDomain domain = load_domain(options.domain);
+    const io::MeshData domain_data = generators::to_mesh_data(domain);
+    const generators::MeshDomainResult2 result =
+        generators::mesh_domain_2(domain, mesh_options, terminal_progress(options.quiet));
+    if (!options.quiet && isatty(STDERR_FILENO)) std::fputs("\r\033[K", stderr);
+    const certificate::Report report = certificate::check_mesh(result.mesh, &domain_data);
+    print_summary(result.stats, report);
+    if (!report.valid) {  // never write a mesh the certificate refuses
+      std::fprintf(stderr, "error: internal: the generated mesh fails its certificate: %s: %s (nothing written)\n",
+                   std::string(certificate::defect_name(report.finding.defect)).c_str(),
+                   report.finding.message.c_str());
+      return 3;
+    }
+    write_outputs(options, result.mesh, domain_data, report);
+    return 0;
+  } catch (const generators::InvalidDomain& e) {
+    return refuse_domain(options.domain, e);
+  } catch (const io::FormatError& e) {
+    std::fprintf(stderr, "error: %s\n", e.what());
+  } catch (const std::invalid_argument& e) {
+    std::fprintf(stderr, "error: %s\n", e.what());
+  } catch (const std::bad_alloc&) {
+    std::fprintf(stderr, "error: out of memory\n");
+  }
+  return 2;
+}
+
+}  // namespace certimesh::cli
