@@ -5,6 +5,7 @@
 //   output NAME
 // `#` starts a comment. Errors are `error: FILE:LINE: why`; exit 0 written, 1 bad script or
 // invalid result, 2 unreadable script or unwritable output.
+#include <algorithm>
 #include <charconv>
 #include <cmath>
 #include <cstdio>
@@ -40,10 +41,13 @@ struct Statement {
   std::vector<std::string> words;
 };
 
-std::vector<Statement> statements_of(std::istream& in) {
+// The statements of a script, and in `lines` how many lines it has.
+std::vector<Statement> statements_of(std::istream& in, std::size_t& lines) {
   std::vector<Statement> out;
   std::string text;
+  lines = 0;
   for (std::size_t line = 1; std::getline(in, text); ++line) {
+    lines = line;
     if (const auto hash = text.find('#'); hash != std::string::npos) text.resize(hash);
     std::istringstream words(text);
     Statement s{line, {}};
@@ -156,10 +160,11 @@ int run_domain(const std::string& script_path, const std::string& output) {
   }
   gen::PlanarDomain domain;
   try {
-    const std::vector<Statement> statements = statements_of(in);
+    std::size_t lines = 0;
+    const std::vector<Statement> statements = statements_of(in, lines);
     Script script;
     for (const Statement& s : statements) script.run(s);
-    domain = script.domain(statements.empty() ? 1 : statements.back().line);
+    domain = script.domain(std::max<std::size_t>(lines, 1));
   } catch (const ScriptError& e) {
     std::fprintf(stderr, "error: %s:%zu: %s\n", script_path.c_str(), e.line, e.why.c_str());
     return 1;

@@ -2,6 +2,13 @@
 // conversion of a region to a validated PlanarDomain with exactly checked hole points.
 #include "certimesh/generators/domain/constructive_geometry_2.h"
 
+// Boost 1.74 rescales double coordinates to integers for its overlay by default, and maps the
+// intersection points back with a rounding error even where the exact point is a double (two
+// dyadic axis-aligned rectangles came back with an area off by 2^-45). Without the rescaling,
+// intersection points are computed from the input doubles (Cramer's rule), exact whenever the
+// exact point and the intermediate products are representable. Only this translation unit
+// includes Boost.Geometry, so the setting cannot differ between users of the templates.
+#define BOOST_GEOMETRY_NO_ROBUSTNESS 1
 #include <boost/geometry.hpp>
 #include <boost/geometry/geometries/multi_polygon.hpp>
 #include <boost/geometry/geometries/point_xy.hpp>
