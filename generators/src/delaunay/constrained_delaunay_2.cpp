@@ -10,7 +10,7 @@
 #include <deque>
 #include <sstream>
 
-#include "certimesh/predicates/incircle.h"
+#include "certimesh/generators/delaunay/perturbed_predicates.h"
 #include "certimesh/predicates/orient2d.h"
 #include "hilbert_order.h"
 
@@ -18,33 +18,12 @@ namespace certimesh::generators {
 
 namespace {
 
-using predicates::FilteredSign;
-using predicates::Sign;
 using predicates::to_int;
 
 constexpr std::uint32_t ghost = ConstrainedDelaunay2::none;
 
-// The perturbed orientation: the filter, the exact stage, and simulation of simplicity only
-// on an exact zero (GMP minors are costly; on grids exact zeros are common). Zero only when
-// two points are equal.
-int orient_perturbed(const Point2& a, const Point2& b, const Point2& c) {
-  const FilteredSign f = predicates::orient2d_filtered(a, b, c);
-  if (predicates::is_certain(f)) return to_int(f);
-  const Sign s = predicates::detail::orient2d_exact_stage(a, b, c);
-  if (s != Sign::zero) return to_int(s);
-  if (a == b || b == c || a == c) return 0;
-  return to_int(predicates::orient2d_sos(a, b, c));
-}
-
-// The perturbed in-circle sign of d against the counterclockwise (a, b, c).
-int incircle_perturbed(const Point2& a, const Point2& b, const Point2& c, const Point2& d) {
-  const FilteredSign f = predicates::incircle_filtered(a, b, c, d);
-  if (predicates::is_certain(f)) return to_int(f);
-  const Sign s = predicates::detail::incircle_exact_stage(a, b, c, d);
-  if (s != Sign::zero) return to_int(s);
-  if (a == d || b == d || c == d) return 0;
-  return to_int(predicates::incircle_sos(a, b, c, d));
-}
+using detail::incircle_perturbed;
+using detail::orient_perturbed;
 
 int orient_exact(const Point2& a, const Point2& b, const Point2& c) {
   return to_int(predicates::orient2d(a, b, c));
