@@ -10,7 +10,8 @@
 // exact point of the segment nearest the edge midpoint (design decision 2), so the certificate
 // still finds it on the domain.
 //
-//   experiment_regrade_2d [--h 0.034] [--max-operations N] [--target Q0]
+//   experiment_regrade_2d [--h 0.034] [--max-operations N] [--target Q0] [--basket-size N2]
+//                         [--baskets N3] [--coarsen-straight-boundary]
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -25,7 +26,9 @@
 #include "certimesh/generators/domain/default_domains.h"
 #include "certimesh/generators/improvement/quality_improvement_2.h"
 #include "certimesh/generators/mesh_domain_2.h"
+#include "certimesh/topology/local_modifications_2.h"
 #include "certimesh/topology/mesh_data_conversion.h"
+#include "certimesh/topology/quality.h"
 #include "point_on_segment.h"
 
 namespace {
@@ -38,15 +41,29 @@ struct Arguments {
   double h = 0.034;
   std::uint64_t max_operations = 0;  // 0: 100 x the start count; stagnation (N3) stops earlier
   double target = 0.9;
+  std::uint32_t basket_size = 0;  // N2; 0: the default (7 %)
+  std::uint32_t baskets = 0;      // N3; 0: the default (N2 * N3 just above the count)
+  bool coarsen_straight_boundary = false;
 };
 
 Arguments parse(int argc, char** argv) {
   Arguments a;
-  for (int i = 1; i + 1 < argc; i += 2) {
+  for (int i = 1; i < argc; i += 2) {
     const std::string key = argv[i];
+    if (key == "--coarsen-straight-boundary") {
+      a.coarsen_straight_boundary = true;
+      --i;
+      continue;
+    }
+    if (i + 1 >= argc) {
+      std::fprintf(stderr, "error: option %s needs a value\n", key.c_str());
+      std::exit(2);
+    }
     if (key == "--h") a.h = std::atof(argv[i + 1]);
     else if (key == "--max-operations") a.max_operations = std::strtoull(argv[i + 1], nullptr, 10);
     else if (key == "--target") a.target = std::atof(argv[i + 1]);
+    else if (key == "--basket-size") a.basket_size = static_cast<std::uint32_t>(std::atoi(argv[i + 1]));
+    else if (key == "--baskets") a.baskets = static_cast<std::uint32_t>(std::atoi(argv[i + 1]));
     else {
       std::fprintf(stderr, "error: unknown option %s\n", key.c_str());
       std::exit(2);
@@ -104,6 +121,26 @@ topo::BoundaryProjection2 projection_onto(const gen::PlanarDomain& domain, const
   };
 }
 
+// Where the worst element is, and whether its vertices are on the trace: what caps the result.
+void print_worst(const topo::TriangleMesh2& mesh, const gen::ImprovementOptions2& options) {
+  double worst = 2.0;
+  topo::ElementId at{};
+  for (std::uint32_t s = 0; s < mesh.element_slot_count(); ++s) {
+    const topo::ElementId e{s};
+    if (!mesh.is_live(e)) continue;
+    const auto v = mesh.vertices(e);
+    const auto a = mesh.point(v[0]), b = mesh.point(v[1]), c = mesh.point(v[2]);
+    const Point2 centroid{(a[0] + b[0] + c[0]) / 3, (a[1] + b[1] + c[1]) / 3};
+    const double q = certimesh::topology::size_aware_triangle_quality(a, b, c, options.size.at(centroid));
+    if (q < worst) worst = q, at = e;
+  }
+  const auto v = mesh.vertices(at);
+  std::printf("  worst element:");
+  for (const auto x : v)
+    std::printf(" (%.4f, %.4f)%s", mesh.point(x)[0], mesh.point(x)[1], topo::is_trace_vertex(mesh, x) ? "T" : "");
+  std::printf("  (T: on the boundary trace)\n");
+}
+
 struct OperationSet {
   const char* name;
   std::uint8_t operations;
@@ -157,6 +194,9 @@ int main(int argc, char** argv) {
     gen::ImprovementOptions2 options;
     options.target_quality = args.target;
     options.operations = set.operations;
+    options.basket_size = args.basket_size;
+    options.max_baskets = args.baskets;
+    options.coarsen_straight_boundary = args.coarsen_straight_boundary;
     options.max_operations = args.max_operations > 0 ? args.max_operations : 100 * start.stats.triangles;
     options.size.size_function = [scale](const Point2& p) { return scale * distance_to_holes(p); };
     options.boundary_projection = projection_onto(domain, mesh);
@@ -176,6 +216,7 @@ int main(int argc, char** argv) {
     if (&set == &sets[0])
       std::printf("%-30s %9s %8.4f %8.4f %9zu  (the start mesh, graded size-aware quality)\n", "start", "-",
                   stats.initial_worst, stats.initial_mean, start.stats.triangles);
+    print_worst(mesh, options);
     if (!report.valid) std::printf("  certificate: %s\n", report.finding.message.c_str());
   }
   return all_valid ? 0 : 1;

@@ -41,6 +41,7 @@ RC_GTEST_PROP(imp_Algorithm35, WorstNeverDecreasesAndBudgetHolds, ()) {
   ImprovementOptions2 options;
   options.target_quality = 0.99;
   if (*rc::gen::arbitrary<bool>()) options.size.uniform_size = *rc::gen::element(0.5, 0.8, 1.6);
+  options.coarsen_straight_boundary = *rc::gen::arbitrary<bool>();
   double previous = -1.0;
   for (std::uint64_t budget = 1; budget <= 64; budget *= 2) {
     TriangleMesh2 mesh = imp_testing::to_mesh(start);

@@ -3,6 +3,7 @@
 // operation the independent certificate accepts the mesh against its domain, the boundary
 // edges and the constrained interior edges are the same (same coordinates), the total area is
 // unchanged exactly (GMP rationals), and the worst quality of what changed rose strictly.
+// With straight-boundary coarsening on, boundary edges may merge; the rest still holds.
 #include <gtest/gtest.h>
 #include <rapidcheck/gtest.h>
 
@@ -85,9 +86,12 @@ RC_GTEST_PROP(imp_LocalModifications, CommittedOperationsKeepMeshValidBoundaryAr
   TriangleMesh2 mesh = imp_testing::to_mesh(fuzz::kuhn_grid(grid));
   if (*rc::gen::arbitrary<bool>()) add_constraints(mesh, grid.cells[0]);
   const double h = *rc::gen::element(0.0, 0.4, 1.0, 2.5);
-  const auto options = options_with_size(
+  auto options = options_with_size(
       h, *rc::gen::element(topology::CollapseReference::survivors_only,
                            topology::CollapseReference::survivors_and_removed));
+  // With coarsening the boundary edges may merge along straight sides: the certificate with the
+  // domain and the exact area then decide that the boundary is still the same point set.
+  options.coarsen_straight_boundary = *rc::gen::arbitrary<bool>();
 
   const auto boundary = imp_testing::boundary_edges(mesh);
   const auto constrained = imp_testing::labelled_edges(mesh);
@@ -109,7 +113,7 @@ RC_GTEST_PROP(imp_LocalModifications, CommittedOperationsKeepMeshValidBoundaryAr
     RC_ASSERT(q1 > q0);
     const auto report = imp_testing::certify(mesh, &domain);
     if (!report.valid) RC_FAIL(std::string(operation_names[operation]) + ": " + report.finding.message);
-    RC_ASSERT(imp_testing::boundary_edges(mesh) == boundary);
+    if (!options.coarsen_straight_boundary) RC_ASSERT(imp_testing::boundary_edges(mesh) == boundary);
     RC_ASSERT(imp_testing::labelled_edges(mesh) == constrained);
     RC_ASSERT(imp_testing::twice_signed_area(mesh) == area);
   }

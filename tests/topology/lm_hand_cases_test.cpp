@@ -158,6 +158,27 @@ TEST(lm_Collapse, LinkConditionRefusesAThirdCommonNeighbour) {
   EXPECT_EQ(checked_twice_area(b.mesh), area);
 }
 
+TEST(lm_Collapse, StraightBoundaryVertexMergesAlongItsEdgeOnlyWhenAllowed) {
+  // The strip [0,4] x [0,1]: bottom (0,0), (1,0), (2,0), (4,0); top (0,1), (4,1). The bottom
+  // vertices (1,0) and (2,0) are exactly on the bottom side; (0,0) and (4,0) are corners.
+  auto b = build({{0, 0}, {1, 0}, {2, 0}, {4, 0}, {0, 1}, {4, 1}},
+                 {{0, 1, 4}, {1, 2, 4}, {2, 5, 4}, {2, 3, 5}});
+  const mpq_class area = checked_twice_area(b.mesh);
+  auto o = perimeter_quality();
+  const auto [e, i] = edge_of(b.mesh, b.v[1], b.v[2]);
+  EXPECT_FALSE(try_edge_collapse(b.mesh, e, i, o));  // the trace is kept by default
+  o.coarsen_straight_boundary = true;
+  ASSERT_TRUE(try_edge_collapse(b.mesh, e, i, o));
+  EXPECT_EQ(b.mesh.element_count(), 3u);
+  EXPECT_EQ(b.mesh.vertex_count(), 5u);
+  EXPECT_EQ(checked_twice_area(b.mesh), area);
+  // The corner (0,0) is not on a straight line with its boundary neighbours: it stays.
+  const auto [e2, i2] = edge_of(b.mesh, b.v[0], b.v[4]);
+  EXPECT_FALSE(try_edge_collapse(b.mesh, e2, i2, o));
+  EXPECT_TRUE(b.mesh.is_live(b.v[0]));
+  EXPECT_TRUE(b.mesh.is_live(b.v[4]));
+}
+
 // A free centre near link vertex 0 of a regular n-gon: its star has slivers; the fan from
 // vertex 0 is better, so node deletion removes the centre and leaves n - 2 triangles.
 void deletion_case(int n) {

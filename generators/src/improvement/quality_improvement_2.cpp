@@ -106,7 +106,8 @@ ImprovementStats2 improve_quality_2(TriangleMesh2& mesh, const ImprovementOption
   require_counterclockwise(mesh);
   const auto quality = quality_function(options.size);
   const topology::LocalModificationOptions2 lm{quality, options.boundary_projection,
-                                               options.collapse_reference, options.minimum_shift_gain};
+                                               options.collapse_reference, options.minimum_shift_gain,
+                                               options.coarsen_straight_boundary};
   improvement::QualityOrder order;
   for (std::uint32_t slot = 0; slot < mesh.element_slot_count(); ++slot)
     if (mesh.is_live(ElementId{slot})) order.insert(ElementId{slot}, element_quality(mesh, ElementId{slot}, quality));
@@ -120,6 +121,7 @@ ImprovementStats2 improve_quality_2(TriangleMesh2& mesh, const ImprovementOption
   std::size_t k = 1;
   std::uint64_t round = 1;
   while (stats.iterations < budget.operations) {
+    if (k > order.size()) k = 1;  // collapses and deletions shrink the list under the pointer
     const ElementId e = order.kth_worst(k);
     if (order.quality(e) >= options.target_quality) {
       if (k == 1) break;  // the worst element reached Q0

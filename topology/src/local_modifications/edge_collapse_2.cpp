@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <limits>
 
+#include "certimesh/predicates/orient2d.h"
 #include "local_geometry_2.h"
 
 namespace certimesh::topology {
@@ -27,16 +28,77 @@ bool link_condition_holds(const local::OrderedStar2& star_a, const local::Ordere
   std::vector<VertexId> common;
   std::set_intersection(link_a.begin(), link_a.end(), link_b.begin(), link_b.end(), std::back_inserter(common));
   std::vector<VertexId> apexes{std::min(c, d), std::max(c, d)};
+  if (c == d) apexes.pop_back();  // a boundary edge has one apex
   return common == apexes;
+}
+
+// Merges `gone` into `kept` along their open boundary edge, apex c, when gone is a straight
+// boundary vertex: its only constrained edges are its two boundary edges, they carry the same
+// label, and gone lies exactly on the line through kept and its other boundary neighbour
+// `other`. In a valid mesh the two boundary edges cannot overlap, so gone is between kept and
+// other and the boundary polygon keeps its point set.
+std::optional<LocalChange2> collapse_straight_boundary_vertex(TriangleMesh2& mesh, ElementId element, VertexId kept,
+                                                              VertexId gone, VertexId c,
+                                                              const LocalModificationOptions2& options) {
+  const auto star_gone = local::ordered_star(mesh, gone);
+  const auto star_kept = local::ordered_star(mesh, kept);
+  if (!star_gone || !star_kept || star_gone->closed) return std::nullopt;
+  const VertexId first = star_gone->link.front(), last = star_gone->link.back();
+  if (first != kept && last != kept) return std::nullopt;
+  const VertexId other = first == kept ? last : first;
+  for (const ElementId e : star_gone->elements) {
+    const int i = local::local_index(mesh, e, gone);
+    for (const int facet : {(i + 1) % 3, (i + 2) % 3})
+      if (mesh.neighbour(e, facet) != no_element && is_constrained_edge(mesh, e, facet)) return std::nullopt;
+  }
+  const Label boundary_label = mesh.facet_label({gone, kept});
+  if (mesh.facet_label({gone, other}) != boundary_label) return std::nullopt;
+  const auto p = [&](VertexId v) {
+    const auto q = mesh.point(v);
+    return predicates::Point2{q[0], q[1]};
+  };
+  if (predicates::orient2d(p(kept), p(gone), p(other)) != predicates::Sign::zero) return std::nullopt;
+  if (!link_condition_holds(*star_kept, *star_gone, c, c) || mesh.find_facet({kept, other})) return std::nullopt;
+
+  std::vector<ElementId> removed{element};
+  std::vector<local::VirtualTriangle> added;
+  double q0 = options.collapse_reference == CollapseReference::survivors_and_removed
+                  ? local::quality_of(mesh, element, options)
+                  : std::numeric_limits<double>::infinity();
+  double q1 = std::numeric_limits<double>::infinity();
+  for (const ElementId e : star_gone->elements) {
+    if (e == element) continue;
+    removed.push_back(e);
+    q0 = std::min(q0, local::quality_of(mesh, e, options));
+    auto t = local::virtual_triangle(mesh, mesh.vertices(e), mesh.label(e));
+    for (std::size_t i = 0; i < 3; ++i)
+      if (t.vertices[i] == gone) t.vertices[i] = kept, t.points[i] = mesh.point(kept);
+    if (!local::is_positive(t)) return std::nullopt;
+    q1 = std::min(q1, local::quality_of(t, options));
+    added.push_back(t);
+  }
+  if (!(q1 > q0)) return std::nullopt;
+  mesh.set_facet_label({gone, kept}, 0);
+  mesh.set_facet_label({gone, other}, 0);
+  auto change = local::replace_elements(mesh, removed, added);
+  mesh.remove_vertex(gone);
+  mesh.set_facet_label({kept, other}, boundary_label);
+  return change;
 }
 
 }  // namespace
 
 std::optional<LocalChange2> try_edge_collapse(TriangleMesh2& mesh, ElementId element, int local_edge,
                                               const LocalModificationOptions2& options) {
-  if (is_constrained_edge(mesh, element, local_edge)) return std::nullopt;
   const auto vs = mesh.vertices(element);
   const VertexId c = vs[static_cast<std::size_t>(local_edge)];
+  if (is_constrained_edge(mesh, element, local_edge)) {
+    if (!options.coarsen_straight_boundary || mesh.neighbour(element, local_edge) != no_element) return std::nullopt;
+    const VertexId a = vs[static_cast<std::size_t>((local_edge + 1) % 3)];
+    const VertexId b = vs[static_cast<std::size_t>((local_edge + 2) % 3)];
+    if (auto change = collapse_straight_boundary_vertex(mesh, element, a, b, c, options)) return change;
+    return collapse_straight_boundary_vertex(mesh, element, b, a, c, options);
+  }
   VertexId kept = vs[static_cast<std::size_t>((local_edge + 1) % 3)];
   VertexId gone = vs[static_cast<std::size_t>((local_edge + 2) % 3)];
   const ElementId across = mesh.neighbour(element, local_edge);

@@ -56,6 +56,12 @@ struct LocalModificationOptions2 {
   /// of a few ulps, and Algorithm 35 would spend its whole budget on them (measured in the §5.2
   /// experiment: 183,729 shifts without progress). 0 = the monograph's bare Q1 > Q0.
   double minimum_shift_gain = 1e-3;
+  /// Off by default (the trace is kept vertex for vertex). On: an edge collapse may also remove
+  /// a boundary vertex that lies exactly (orient2d == 0) on the straight line between its two
+  /// boundary neighbours, merging it into one of them along an open boundary edge. The boundary
+  /// stays the same point set exactly; only its discretization coarsens (digest D §2.1, 2D-4:
+  /// the book collapses boundary edges; here only where nothing moves).
+  bool coarsen_straight_boundary = false;
 };
 
 /// What a committed operation changed. A node shift keeps the element ids of the star: they
@@ -81,7 +87,8 @@ std::optional<LocalChange2> try_node_shift(TriangleMesh2& mesh, VertexId v,
                                            const LocalModificationOptions2& options);
 
 /// Algorithm 33: merge the edge's endpoints at its midpoint (at the trace endpoint when one
-/// endpoint is on the trace; never when both are).
+/// endpoint is on the trace; never when both are, except a straight boundary vertex merging
+/// along its boundary edge with `coarsen_straight_boundary`).
 std::optional<LocalChange2> try_edge_collapse(TriangleMesh2& mesh, ElementId element, int local_edge,
                                               const LocalModificationOptions2& options);
 

@@ -44,6 +44,10 @@ struct ImprovementOptions2 {
   /// The least gain of the star's worst quality for which a node shift counts (see
   /// LocalModificationOptions2::minimum_shift_gain).
   double minimum_shift_gain = 1e-3;
+  /// Let edge collapses remove boundary vertices that lie exactly on the straight line between
+  /// their boundary neighbours (LocalModificationOptions2::coarsen_straight_boundary). Off: the
+  /// boundary trace is kept vertex for vertex.
+  bool coarsen_straight_boundary = false;
 };
 
 struct ImprovementStats2 {
