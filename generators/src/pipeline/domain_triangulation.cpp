@@ -1,6 +1,7 @@
 #include "domain_triangulation.h"
 
 #include <algorithm>
+#include <array>
 #include <cstdint>
 #include <string>
 #include <unordered_map>
@@ -25,27 +26,21 @@ std::string point_text(const Point2& p) {
   return s;
 }
 
-// Which sides of each subsegment are inside, and the front edges they give.
+// Which sides of each domain segment are inside, with the region label on that side.
 struct SideScan {
-  std::vector<std::uint8_t> inside_sides;  // per subsegment: bit 0 = a->b side, bit 1 = b->a
-  struct Oriented {
-    std::uint32_t subsegment;
-    std::uint8_t reversed;
-    FrontEdge edge;
-    io::Label region;
-  };
-  std::vector<Oriented> front;
+  std::vector<std::uint8_t> inside_sides;  // per segment: bit 0 = the a->b side, bit 1 = b->a
+  std::vector<std::array<io::Label, 2>> region;
 };
 
-SideScan scan_sides(const ConstrainedDelaunay2& cdt, const std::vector<int>& labels,
-                    const DiscretizedBoundary& boundary) {
-  std::unordered_map<std::uint64_t, std::uint32_t> subsegment_of;
-  subsegment_of.reserve(boundary.subsegments.size() * 2);
-  for (std::uint32_t s = 0; s < boundary.subsegments.size(); ++s) {
-    subsegment_of.emplace(edge_key(boundary.subsegments[s].a, boundary.subsegments[s].b), s);
+SideScan scan_sides(const ConstrainedDelaunay2& cdt, const std::vector<int>& labels, const PlanarDomain& domain) {
+  std::unordered_map<std::uint64_t, std::uint32_t> segment_of;
+  segment_of.reserve(domain.segments.size() * 2);
+  for (std::uint32_t s = 0; s < domain.segments.size(); ++s) {
+    segment_of.emplace(edge_key(domain.segments[s].a, domain.segments[s].b), s);
   }
   SideScan scan;
-  scan.inside_sides.assign(boundary.subsegments.size(), 0);
+  scan.inside_sides.assign(domain.segments.size(), 0);
+  scan.region.assign(domain.segments.size(), {0, 0});
   for (std::uint32_t t = 0; t < cdt.triangle_slot_count(); ++t) {
     if (!cdt.is_live(t) || labels[t] < 0) continue;
     const auto v = cdt.vertices(t);
@@ -53,28 +48,43 @@ SideScan scan_sides(const ConstrainedDelaunay2& cdt, const std::vector<int>& lab
       if (!cdt.is_constrained(t, i)) continue;
       const std::uint32_t p = v[static_cast<std::size_t>((i + 1) % 3)];
       const std::uint32_t q = v[static_cast<std::size_t>((i + 2) % 3)];
-      const auto found = subsegment_of.find(edge_key(p, q));
-      if (found == subsegment_of.end()) continue;  // cannot happen: every constraint is a subsegment
+      const auto found = segment_of.find(edge_key(p, q));
+      if (found == segment_of.end()) continue;  // cannot happen: every constraint is a segment
       const std::uint32_t s = found->second;
-      const std::uint8_t reversed = boundary.subsegments[s].a == p ? 0 : 1;
-      scan.inside_sides[s] |= static_cast<std::uint8_t>(1u << reversed);
-      scan.front.push_back({s, reversed, FrontEdge{p, q}, labels[t]});
+      const std::size_t side = domain.segments[s].a == p ? 0 : 1;  // t is left of p -> q
+      scan.inside_sides[s] |= static_cast<std::uint8_t>(1u << side);
+      scan.region[s][side] = labels[t];
     }
   }
-  std::sort(scan.front.begin(), scan.front.end(), [](const auto& x, const auto& y) {
-    return x.subsegment != y.subsegment ? x.subsegment < y.subsegment : x.reversed < y.reversed;
-  });
   return scan;
 }
 
-void refuse_open_boundary(const PlanarDomain& domain, const DiscretizedBoundary& boundary,
-                          const std::vector<std::uint8_t>& inside_sides) {
+// F(P) over the discretized boundary: every inside side of a segment contributes its chain
+// of subsegments, run in the direction that has that side on its left.
+void build_front(const SideScan& scan, const DiscretizedBoundary& boundary, DomainTriangulation& out) {
+  std::vector<std::uint32_t> first(scan.inside_sides.size() + 1, 0);  // subsegments of segment s
+  for (const std::uint32_t s : boundary.origin) ++first[s + 1];
+  for (std::size_t s = 0; s < scan.inside_sides.size(); ++s) first[s + 1] += first[s];
+  for (std::uint32_t s = 0; s < scan.inside_sides.size(); ++s) {
+    if (scan.inside_sides[s] & 1u) {
+      for (std::uint32_t k = first[s]; k < first[s + 1]; ++k) {
+        out.front.push_back({boundary.subsegments[k].a, boundary.subsegments[k].b});
+        out.front_region.push_back(scan.region[s][0]);
+      }
+    }
+    if (scan.inside_sides[s] & 2u) {
+      for (std::uint32_t k = first[s + 1]; k-- > first[s];) {
+        out.front.push_back({boundary.subsegments[k].b, boundary.subsegments[k].a});
+        out.front_region.push_back(scan.region[s][1]);
+      }
+    }
+  }
+}
+
+void refuse_open_boundary(const PlanarDomain& domain, const std::vector<std::uint8_t>& inside_sides) {
   std::vector<DomainProblem> problems;
-  std::uint32_t last_reported = UINT32_MAX;
-  for (std::uint32_t s = 0; s < inside_sides.size() && problems.size() < 16; ++s) {
-    const std::uint32_t original = boundary.origin[s];
-    if (inside_sides[s] != 0 || original == last_reported) continue;
-    last_reported = original;
+  for (std::uint32_t original = 0; original < inside_sides.size() && problems.size() < 16; ++original) {
+    if (inside_sides[original] != 0) continue;
     const DomainSegment& seg = domain.segments[original];
     DomainProblem p;
     p.kind = DomainProblemKind::open_boundary;
@@ -97,27 +107,24 @@ bool has_bounded_face(const ConstrainedDelaunay2& cdt) {
 
 DomainTriangulation triangulate_domain(const PlanarDomain& domain, const DiscretizedBoundary& boundary,
                                        const ProgressCallback& progress) {
-  ConstrainedDelaunay2 cdt(boundary.points, progress);
-  for (const DomainSegment& s : boundary.subsegments) cdt.insert_constraint(s.a, s.b);
-  std::vector<int> labels = cdt.classify(domain.holes, domain.regions);
-  const SideScan scan = scan_sides(cdt, labels, boundary);
-  if (scan.front.empty()) {
+  ConstrainedDelaunay2 cdt(domain.points, progress);
+  for (const DomainSegment& s : domain.segments) cdt.insert_constraint(s.a, s.b);
+  const std::vector<int> labels = cdt.classify(domain.holes, domain.regions);
+  const SideScan scan = scan_sides(cdt, labels, domain);
+  const bool any_inside = std::any_of(scan.inside_sides.begin(), scan.inside_sides.end(),
+                                      [](std::uint8_t sides) { return sides != 0; });
+  if (!any_inside) {
     // No bounded face at all: the segments enclose nothing (open loops). Bounded faces that
     // the hole points all ate: an empty domain.
-    if (!has_bounded_face(cdt)) refuse_open_boundary(domain, boundary, scan.inside_sides);
+    if (!has_bounded_face(cdt)) refuse_open_boundary(domain, scan.inside_sides);
     DomainProblem p;
     p.kind = DomainProblemKind::empty_domain;
     p.message = "the domain is empty: every face of the segments is unbounded or contains a hole point";
     throw InvalidDomain({std::move(p)});
   }
-  refuse_open_boundary(domain, boundary, scan.inside_sides);
-  DomainTriangulation out{std::move(cdt), std::move(labels), {}, {}};
-  out.front.reserve(scan.front.size());
-  out.front_region.reserve(scan.front.size());
-  for (const auto& f : scan.front) {
-    out.front.push_back(f.edge);
-    out.front_region.push_back(f.region);
-  }
+  refuse_open_boundary(domain, scan.inside_sides);
+  DomainTriangulation out;
+  build_front(scan, boundary, out);
   return out;
 }
 

@@ -1,5 +1,7 @@
-// Stage 3 of the pipeline: the constrained Delaunay triangulation of the discretized
-// boundary, classified into outside (-1) and regions (Triangle's rule: faces reachable from
+// Stage 3 of the pipeline: the constrained Delaunay triangulation of the domain's own points
+// and segments (not of the discretized boundary: a few hundred collinear Steiner points per
+// side make incremental Delaunay slow, and the answer is the same), classified into outside
+// (-1) and regions (Triangle's rule: faces reachable from
 // the hull or from a hole point without crossing a segment are outside). It decides what the
 // boundary alone cannot: a segment with the domain on neither side (an open loop), an empty
 // domain; and it gives the closed front F(P) of the monograph (outer sides with the domain on
@@ -17,9 +19,7 @@
 namespace certimesh::generators::detail {
 
 struct DomainTriangulation {
-  ConstrainedDelaunay2 cdt;
-  std::vector<int> labels;                 // per triangle slot: region label, -1 outside
-  std::vector<FrontEdge> front;            // F(P), sorted by (subsegment, direction)
+  std::vector<FrontEdge> front;            // F(P) over the discretized boundary's points
   std::vector<io::Label> front_region;     // the region label left of each front edge
 };
 

@@ -186,13 +186,13 @@ MeshDomainResult2 mesh_domain_2(const PlanarDomain& domain, const MeshDomainOpti
   const detail::DiscretizedBoundary boundary = discretize_valid_boundary(domain, options.size);
   result.stats.boundary_vertices = boundary.points.size();
   clock.lap("boundary");
-  detail::DomainTriangulation dt = detail::triangulate_domain(domain, boundary, progress);
+  const detail::DomainTriangulation dt = detail::triangulate_domain(domain, boundary, progress);
   clock.lap("domain triangulation");
   Generated generated;
   if (options.algorithm == MeshAlgorithm2::advancing_front) {
     generated = advancing_front_stage(dt, boundary, options, progress, clock);
   } else {
-    const detail::RefinedTriangulation refined = detail::refine_domain(dt, options.size, progress);
+    const detail::RefinedTriangulation refined = detail::refine_domain(domain, boundary, options.size, progress);
     generated = Generated{refined.points, refined.triangles, refined.labels, 0};
     clock.lap("delaunay refinement");
   }

@@ -1,15 +1,16 @@
-// The Delaunay path of the pipeline (--algorithm delaunay): interior Steiner points inserted
-// into the classified domain triangulation until the size policy holds; the boundary trace is
-// kept (no point on a segment).
+// The Delaunay path of the pipeline (--algorithm delaunay): the constrained Delaunay
+// triangulation of the discretized boundary, classified, then refined with interior Steiner
+// points until the size policy holds (delaunay_refinement_2.h); the boundary trace is kept.
 #pragma once
 
 #include <array>
 #include <cstdint>
 #include <vector>
 
+#include "boundary_discretization.h"
+#include "certimesh/generators/domain/planar_domain.h"
 #include "certimesh/generators/progress.h"
 #include "certimesh/generators/size_policy.h"
-#include "domain_triangulation.h"
 
 namespace certimesh::generators::detail {
 
@@ -19,6 +20,7 @@ struct RefinedTriangulation {
   std::vector<io::Label> labels;
 };
 
-RefinedTriangulation refine_domain(DomainTriangulation& dt, const SizePolicy& size, const ProgressCallback& progress);
+RefinedTriangulation refine_domain(const PlanarDomain& domain, const DiscretizedBoundary& boundary,
+                                   const SizePolicy& size, const ProgressCallback& progress);
 
 }  // namespace certimesh::generators::detail
