@@ -273,6 +273,9 @@ TEST(AftShapes, CombWithCoarseSizeCompletes) {
   const Polygon p = comb(10, 0.05, 0.05);
   const AdvancingFrontResult r = advance_front_2(p.points, p.front, uniform(0.4));
   expect_valid_mesh(p, r);
+  // Not a correctness property, but this case exists to exercise it: the local search fails
+  // between the teeth and the exact global retry must find the triangle.
+  EXPECT_GT(r.stats.global_retries, 0u);
 }
 TEST(AftShapes, SquareWithACut) { expect_meshes(square_with_cut(1.0 / 16), 1.0 / 16); }
 TEST(AftShapes, AutomaticGrowth) {
@@ -284,6 +287,24 @@ TEST(AftShapes, AutomaticGrowth) {
   const double delta = std::sqrt(3.0) / 8.0 * least_node_distance(p.points);  // mode B
   EXPECT_GE(least_node_distance(r.points), delta * (1.0 - 1e-9));
   EXPECT_LE(static_cast<double>(r.triangles.size()), independent_bound(p, delta));
+}
+
+TEST(AftShapes, SizeWithGrowthLimit) {
+  // Mode A': the size is 16x the boundary step, growth 1.2 limits how fast it is reached;
+  // spacing then follows mode B's parameters with s0 = min(d0, s_min).
+  const Polygon p = square(1.0 / 64);
+  AdvancingFrontOptions o;
+  o.size.uniform_size = 0.25;
+  o.size.growth = 1.2;
+  const AdvancingFrontResult r = advance_front_2(p.points, p.front, o);
+  expect_valid_mesh(p, r);
+  const double delta = std::sqrt(3.0) / 8.0 * std::min(least_node_distance(p.points), 0.25);
+  EXPECT_GE(least_node_distance(r.points), delta * (1.0 - 1e-9));
+  EXPECT_LE(static_cast<double>(r.triangles.size()), independent_bound(p, delta));
+  double longest = 0.0;  // sizes grew well beyond the boundary step inside
+  for (const auto& t : r.triangles)
+    longest = std::max(longest, std::hypot(r.points[t[1]].x - r.points[t[0]].x, r.points[t[1]].y - r.points[t[0]].y));
+  EXPECT_GT(longest, 4.0 / 64);
 }
 
 TEST(AftShapes, NearCollinearBoundary) {

@@ -14,12 +14,6 @@ void Front2::grow_vertices(std::size_t count) {
   if (first_out_.size() < count) first_out_.resize(count, no_id);
 }
 
-bool Front2::after(const HeapEntry& x, const HeapEntry& y) {
-  if (x.length2 != y.length2) return x.length2 > y.length2;
-  if (x.a != y.a) return x.a > y.a;
-  return x.b > y.b;
-}
-
 std::uint32_t Front2::insert(std::uint32_t a, std::uint32_t b, double length2) {
   const auto id = static_cast<std::uint32_t>(edges_.size());
   edges_.push_back(Edge{a, b, first_out_[a], true});

@@ -51,7 +51,12 @@ class Front2 {
     double length2;
     std::uint32_t a, b, edge;
   };
-  static bool after(const HeapEntry& x, const HeapEntry& y);  // heap order: min on top
+  // Heap order: the least (length2, a, b) on top.
+  static bool after(const HeapEntry& x, const HeapEntry& y) {
+    if (x.length2 != y.length2) return x.length2 > y.length2;
+    if (x.a != y.a) return x.a > y.a;
+    return x.b > y.b;
+  }
 
   std::vector<Edge> edges_;
   std::vector<std::uint32_t> first_out_;
