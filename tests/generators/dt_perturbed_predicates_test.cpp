@@ -1,6 +1,7 @@
 // The GMP-free shortcuts of perturbed_predicates.h against the kernel's orient2d_sos and
 // incircle_sos (the independent reference: GMP minors of the full perturbation scheme) on
-// degenerate inputs: collinear triples and cocircular quadruples in every argument order.
+// degenerate inputs: collinear triples, cocircular and collinear quadruples, in every
+// argument order.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -69,11 +70,30 @@ TEST(dt_perturbed_predicates, CocircularIncircleMatchesTheKernelSoS) {
   EXPECT_GT(compared, 10000);
 }
 
-TEST(dt_perturbed_predicates, FourCollinearPointsFallBackToTheKernel) {
-  std::array<Point2, 4> p{{{0, 0}, {1, 1}, {2, 2}, {5, 5}}};
-  do {
-    ASSERT_EQ(incircle_perturbed(p[0], p[1], p[2], p[3]), to_int(predicates::incircle_sos(p[0], p[1], p[2], p[3])));
-  } while (std::next_permutation(p.begin(), p.end(), [](auto a, auto b) { return lexicographically_less(a, b); }));
+TEST(dt_perturbed_predicates, FourCollinearPointsMatchTheKernelSoS) {
+  std::mt19937_64 rng(3);
+  std::uniform_int_distribution<int> coord(-4, 4);
+  int compared = 0;
+  for (int trial = 0; trial < 600; ++trial) {
+    const Point2 o{double(coord(rng)), double(coord(rng))};
+    // Every third line horizontal or vertical: the cases where a monomial family vanishes.
+    Point2 d{double(coord(rng)), double(coord(rng))};
+    if (trial % 3 == 1) d.y = 0;
+    if (trial % 3 == 2) d.x = 0;
+    if (d.x == 0 && d.y == 0) continue;
+    std::array<Point2, 4> p;
+    for (auto& q : p) {
+      const double k = coord(rng);
+      q = {o.x + 0.5 * k * d.x, o.y + 0.5 * k * d.y};
+    }
+    std::sort(p.begin(), p.end(), [](auto a, auto b) { return lexicographically_less(a, b); });
+    if (std::adjacent_find(p.begin(), p.end()) != p.end()) continue;
+    do {
+      ASSERT_EQ(incircle_perturbed(p[0], p[1], p[2], p[3]), to_int(predicates::incircle_sos(p[0], p[1], p[2], p[3])));
+      ++compared;
+    } while (std::next_permutation(p.begin(), p.end(), [](auto a, auto b) { return lexicographically_less(a, b); }));
+  }
+  EXPECT_GT(compared, 2000);
 }
 
 }  // namespace

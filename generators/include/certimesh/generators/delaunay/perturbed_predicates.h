@@ -12,8 +12,8 @@
 //   incircle, four distinct cocircular points, no three collinear: the most significant
 //     symbol is the lifted entry of the smallest point (row r, column 2): the cofactor
 //     (-1)^r orient2d(other three rows in order), non-zero.
-// Only comparisons and one exact orient2d: no GMP. Other degenerate cases (four collinear
-// points) go to the kernel's general SoS. tests/generators/dt_perturbed_predicates_test.cpp
+//   incircle, four distinct collinear points: see cocircular_incircle_sos.
+// Only comparisons and one exact orient2d: no GMP. tests/generators/dt_perturbed_predicates_test.cpp
 // checks the shortcuts against the kernel's _sos on many degenerate inputs.
 #pragma once
 
@@ -65,8 +65,20 @@ inline int cocircular_incircle_sos(const Point2& a, const Point2& b, const Point
   for (int i = 0, k = 0; i < 4; ++i)
     if (i != r) rest[k++] = row[i];
   const int o = predicates::to_int(predicates::orient2d(*rest[0], *rest[1], *rest[2]));
-  if (o == 0) return predicates::to_int(predicates::incircle_sos(a, b, c, d));  // collinear: general SoS
-  return (r & 1) ? -o : o;
+  const int parity = (r & 1) ? -1 : 1;
+  if (o != 0) return parity * o;
+  // Four collinear points: every lifted-only monomial vanishes. The next candidate is the x
+  // entry of the smallest point, cofactor (-1)^r det[y, |p|^2, 1] of the other rows; on the
+  // line p = P + t D that determinant is D_y |D|^2 (t2-t1)(t3-t1)(t3-t2), whose sign is that
+  // of (y2-y1)(y3-y1)(y3-y2). On a horizontal line it is 0, and so are the monomials pairing
+  // a lifted entry with it (y differences); then the y entry's: (-1)^(r+1) det[x, |p|^2, 1].
+  // Distinct points on the line differ in the coordinate used: no zero factor.
+  auto order_sign = [](double u1, double u2, double u3) {
+    return (u2 > u1 ? 1 : -1) * (u3 > u1 ? 1 : -1) * (u3 > u2 ? 1 : -1);
+  };
+  if (!(rest[0]->y == rest[1]->y && rest[1]->y == rest[2]->y))
+    return parity * order_sign(rest[0]->y, rest[1]->y, rest[2]->y);
+  return -parity * order_sign(rest[0]->x, rest[1]->x, rest[2]->x);
 }
 
 /// The perturbed in-circle sign of d against (a, b, c): 0 only when d equals one of them.
