@@ -2,13 +2,13 @@
 // conversion of a region to a validated PlanarDomain with exactly checked hole points.
 #include "certimesh/generators/domain/constructive_geometry_2.h"
 
-// Boost 1.74 rescales double coordinates to integers for its overlay by default, and maps the
-// intersection points back with a rounding error even where the exact point is a double (two
-// dyadic axis-aligned rectangles came back with an area off by 2^-45). Without the rescaling,
-// intersection points are computed from the input doubles (Cramer's rule), exact whenever the
-// exact point and the intermediate products are representable. Only this translation unit
-// includes Boost.Geometry, so the setting cannot differ between users of the templates.
-#define BOOST_GEOMETRY_NO_ROBUSTNESS 1
+// Boost 1.74's overlay rescales doubles to an integer grid of ~10^7 cells per bounding box
+// (robust topology, but every point it constructs is off by up to a cell). Compiled without
+// the rescaling (BOOST_GEOMETRY_NO_ROBUSTNESS) its points were exact where representable but
+// near-tangent discs came back with crossing rings. So the rescaling stays, and each output
+// point is snapped back to what it stands for: an input vertex, or the exact intersection of
+// two input edges rounded to nearest (design decision 2). The snap distance only chooses the
+// construction; validity is decided afterwards, exactly, by validate_domain.
 #include <boost/geometry.hpp>
 #include <boost/geometry/geometries/multi_polygon.hpp>
 #include <boost/geometry/geometries/point_xy.hpp>
@@ -27,6 +27,7 @@
 #include "certimesh/generators/domain/curves_2.h"
 #include "certimesh/generators/domain/domain_validation.h"
 #include "certimesh/predicates/orient2d.h"
+#include "exact_snap.h"
 
 namespace certimesh::generators {
 
@@ -79,7 +80,20 @@ template <class Operation>
 Region2 boolean_operation(const Region2& a, const Region2& b, Operation operation) {
   BoostRegion result;
   operation(to_boost(a), to_boost(b), result);
-  return from_boost(result);
+  Region2 region = from_boost(result);
+  const detail::ExactSnap snap({&a, &b});
+  Region2 snapped;
+  for (PolygonWithHoles2& polygon : region.polygons) {
+    snap.apply(polygon.outer);
+    if (polygon.outer.empty()) continue;  // a sliver folded away
+    std::vector<Ring> inners;
+    for (Ring& inner : polygon.inners) {
+      snap.apply(inner);
+      if (!inner.empty()) inners.push_back(std::move(inner));
+    }
+    snapped.polygons.push_back({std::move(polygon.outer), std::move(inners)});
+  }
+  return snapped;
 }
 
 // ---- exact point location against rings ---------------------------------------------------
