@@ -12,6 +12,7 @@
 #include <cmath>
 #include <filesystem>
 #include <limits>
+#include <map>
 #include <numbers>
 #include <set>
 #include <string>
@@ -123,6 +124,29 @@ TEST(DomainValidation, BuiltInDomainsAreValid) {
     EXPECT_TRUE(validate_domain(d).empty());
     EXPECT_TRUE(oracle_valid(d));
   }
+}
+
+TEST(DefaultDomains, PlateHasTwoHolesAndACrackWithAFreeTip) {
+  const PlanarDomain d = plate_with_holes_and_crack();
+  EXPECT_EQ(d.points.size(), 72u);    // 5 outer, 3 crack, 2 x 32 hole vertices
+  EXPECT_EQ(d.segments.size(), 72u);  // 5 outer, 3 crack, 2 x 32 hole segments
+  std::vector<int> degree(d.points.size(), 0);
+  std::map<io::Label, int> per_label;
+  for (const DomainSegment& s : d.segments) {
+    ++degree[s.a];
+    ++degree[s.b];
+    ++per_label[s.label];
+  }
+  EXPECT_EQ(per_label, (std::map<io::Label, int>{{1, 5}, {2, 32}, {3, 32}, {4, 3}}));
+  EXPECT_EQ(std::count(degree.begin(), degree.end(), 1), 1);  // the crack tip only
+  EXPECT_EQ(degree[1], 3);                                      // the crack mouth (2, 0)
+  EXPECT_EQ(d.points[1], (Point2{2, 0}));
+  ASSERT_EQ(d.holes.size(), 2u);
+  EXPECT_EQ(d.holes[0], (Point2{1, 1}));
+  EXPECT_EQ(d.holes[1], (Point2{3, 1}));
+  const PlanarDomain s = square_with_two_holes(20);
+  EXPECT_EQ(s.segments.size(), 44u);
+  EXPECT_EQ(s.holes, (std::vector<Point2>{{0.3, 0.5}, {0.7, 0.5}}));
 }
 
 TEST(DomainValidation, CrossingSegmentsNamedWithReadableCoordinates) {
