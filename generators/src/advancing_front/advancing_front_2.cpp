@@ -38,7 +38,7 @@ using predicates::IntersectionMode;
 
 constexpr double kSearchRadiusFactor = 1.25;  // R = 1.25 max(s, r): inside the book's (s, 2s]
 constexpr double kNearRadius = 0.8;  // group 0 of the candidate order, in units of s
-constexpr std::size_t kMaxGridCells = std::size_t{1} << 24;
+constexpr std::size_t kMaxGridCells = std::size_t{1} << 21;  // about 50 MB of empty cells at most
 
 double squared_distance(const Point2& p, const Point2& q) {
   const double dx = p.x - q.x, dy = p.y - q.y;

@@ -9,9 +9,16 @@
 // finds nothing it retries over the whole front with exact predicates (§3.3.3 needs exact
 // signs there). Every loop is bounded by the estimates (3.3.3)-(3.3.4), asserted.
 //
-// It never fails: whatever it leaves (the bound reached, or no candidate -- impossible with
-// exact signs, but checked) is returned as `remaining_front`, a closed front of the unmeshed
-// rest, for the Delaunay completion.
+// It never fails on a valid front: whatever it leaves (max_triangles or the bound reached, or
+// no candidate -- impossible with exact signs, but checked) is returned as `remaining_front`,
+// a closed front of the unmeshed rest, for the Delaunay completion.
+//
+// Sizes (generators/src/advancing_front/front_sizing_2.h): with a size function or a
+// uniform size, s = max(l, size(midpoint of e12)) (the book's mode A); with growth > 1 as
+// well, s is also capped at growth * l, so growth limits how fast the front coarsens towards
+// the size; with no size, s = growth * l (mode B). h = hc/2 and r by (3.3.2) with the book's
+// parameters for the mode. The candidate order (front vertices near the ideal apex first,
+// then the apex, then the others by shape) is documented in advancing_front_2.cpp.
 #pragma once
 
 #include <array>
@@ -56,6 +63,11 @@ struct AdvancingFrontResult {
 };
 
 /// Runs Algorithm 10 from the closed front `front` over `points`. Deterministic.
+/// Throws std::invalid_argument, naming the edge or vertices, for a front that is not one:
+/// an index out of range, an edge from a vertex to itself or listed twice, a non-finite
+/// coordinate, a vertex whose in- and out-degrees differ (not closed), two front vertices at
+/// the same point; and for growth < 1 or a size function value that is not positive and
+/// finite. Points no front edge uses are copied to the result and otherwise ignored.
 AdvancingFrontResult advance_front_2(std::span<const Point2> points, std::span<const FrontEdge> front,
                                      const AdvancingFrontOptions& options,
                                      const ProgressCallback& progress = {});
