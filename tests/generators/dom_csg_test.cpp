@@ -83,6 +83,15 @@ RC_GTEST_PROP(ConstructiveGeometryProperty, DyadicRectanglesExactAreas, ()) {
   RC_ASSERT(validate_domain(d).empty());
 }
 
+TEST(ConstructiveGeometry, FarFromTheOriginStillExact) {
+  // Rectangles near 2^20: the snap distance follows the operands' size, not their magnitude.
+  const double o = 1048576;
+  const Region2 a = rectangle_region(o, o, o + 0.75, o + 0.5), b = rectangle_region(o + 0.25, o + 0.125, o + 1, o + 1);
+  EXPECT_EQ(exact_area(region_intersection(a, b)), mpq_class(1, 2) * mpq_class(3, 8));
+  EXPECT_EQ(exact_area(region_union(a, b)), mpq_class(3, 8) + mpq_class(3, 4) * mpq_class(7, 8) - mpq_class(3, 16));
+  EXPECT_TRUE(validate_domain(to_planar_domain(region_difference(a, b))).empty());
+}
+
 TEST(ConstructiveGeometry, DiscAreasApproximately) {
   const double r = 1, step = 0.01;
   const Region2 a = disc_region({0, 0}, r, step), b = disc_region({1, 0}, r, step);

@@ -85,13 +85,17 @@ ExactSnap::ExactSnap(std::initializer_list<const Region2*> operands) {
     }
   }
   std::sort(vertices_.begin(), vertices_.end(), [](const Point2& p, const Point2& q) { return p.x < q.x || (p.x == q.x && p.y < q.y); });
-  double extent = 0;
-  for (const Point2& p : vertices_) extent = std::max({extent, std::abs(p.x), std::abs(p.y)});
-  if (!vertices_.empty()) {
-    extent = std::max(extent, std::max(vertices_.back().x - vertices_.front().x, 0.0));
+  // Boost's grid has ~10^7 cells across the operands' bounding box (its size, not the
+  // coordinates' magnitude); a few cells of slack.
+  double xmin = 0, xmax = 0, ymin = 0, ymax = 0;
+  for (std::size_t i = 0; i < vertices_.size(); ++i) {
+    const Point2& p = vertices_[i];
+    xmin = i == 0 ? p.x : std::min(xmin, p.x);
+    xmax = i == 0 ? p.x : std::max(xmax, p.x);
+    ymin = i == 0 ? p.y : std::min(ymin, p.y);
+    ymax = i == 0 ? p.y : std::max(ymax, p.y);
   }
-  // Boost's grid has ~10^7 cells across the operands' box; a few cells of slack.
-  distance_ = 4e-7 * extent;
+  distance_ = 4e-7 * std::max(xmax - xmin, ymax - ymin);
 }
 
 bool ExactSnap::nearest_vertex(const Point2& p, Point2& out) const {
