@@ -101,7 +101,7 @@ class AdvancingFront {
     const std::size_t reserve = static_cast<std::size_t>(std::min<std::uint64_t>(limit_ / 3 + 16, 1u << 26));
     result_.points.reserve(points.size() + reserve / 2);
     result_.triangles.reserve(reserve);
-    front_.reserve(points.size() + reserve / 2, front.size() + 2 * reserve);
+    front_.reserve(points.size() + reserve / 2, 2 * front.size() + 1024);  // slots are reused: the front, not the mesh
     grow_vertices();
     for (const FrontEdge& e : front) insert_edge(e.a, e.b);
   }
@@ -161,7 +161,7 @@ class AdvancingFront {
   void insert_edge(std::uint32_t a, std::uint32_t b) {
     const std::uint32_t e = front_.insert(a, b, squared_distance(point(a), point(b)));
     grid_.insert(e, point(a), point(b));
-    edge_stamp_.push_back(0);
+    if (e >= edge_stamp_.size()) edge_stamp_.push_back(0);
   }
 
   void erase_edge(std::uint32_t e) {

@@ -15,8 +15,15 @@ void Front2::grow_vertices(std::size_t count) {
 }
 
 std::uint32_t Front2::insert(std::uint32_t a, std::uint32_t b, double length2) {
-  const auto id = static_cast<std::uint32_t>(edges_.size());
-  edges_.push_back(Edge{a, b, first_out_[a], true});
+  std::uint32_t id = 0;
+  if (free_slots_.empty()) {
+    id = static_cast<std::uint32_t>(edges_.size());
+    edges_.emplace_back();
+  } else {
+    id = free_slots_.back();
+    free_slots_.pop_back();
+  }
+  edges_[id] = Edge{a, b, first_out_[a], true};
   first_out_[a] = id;
   heap_.push_back(HeapEntry{length2, a, b, id});
   std::push_heap(heap_.begin(), heap_.end(), after);
@@ -31,6 +38,7 @@ void Front2::erase(std::uint32_t e) {
   *link = edge.next_out;
   edge.alive = false;
   edge.next_out = no_id;
+  free_slots_.push_back(e);
   --live_;
 }
 
@@ -41,7 +49,11 @@ std::uint32_t Front2::find(std::uint32_t a, std::uint32_t b) const {
 }
 
 std::uint32_t Front2::shortest() {
-  while (!heap_.empty() && !edges_[heap_.front().edge].alive) {
+  const auto stale = [&](const HeapEntry& h) {
+    const Edge& e = edges_[h.edge];
+    return !e.alive || e.a != h.a || e.b != h.b;
+  };
+  while (!heap_.empty() && stale(heap_.front())) {
     std::pop_heap(heap_.begin(), heap_.end(), after);
     heap_.pop_back();
   }

@@ -1,13 +1,14 @@
 // The front of Algorithm 10: directed edges with the unmeshed region on their left.
 //
 // Three views of the same set, kept in step by insert/erase:
-//   - the edges themselves, in an append-only slot array (ids are never reused, so an id is
-//     a deterministic name for one edge for the whole run);
+//   - the edges themselves, in a slot array whose dead slots are reused last-freed first (so
+//     the memory follows the front, not the mesh, and ids stay deterministic);
 //   - per vertex, the list of its outgoing edges (an intrusive singly linked list): this is
 //     the (a, b) -> edge map of the front update rule, and tells whether a vertex is still a
 //     front vertex (a closed front has out-degree = in-degree >= 1 at each of its vertices);
-//   - a binary min-heap on (squared length, a, b) with lazy deletion, so the shortest edge is
-//     found in O(log n) and ties are broken by vertex ids, never by memory layout.
+//   - a binary min-heap on (squared length, a, b) with lazy deletion (an entry is stale when
+//     its slot is dead or holds another edge), so the shortest edge is found in O(log n) and
+//     ties are broken by vertex ids, never by memory layout.
 #pragma once
 
 #include <cstdint>
@@ -61,6 +62,7 @@ class Front2 {
   std::vector<Edge> edges_;
   std::vector<std::uint32_t> first_out_;
   std::vector<HeapEntry> heap_;
+  std::vector<std::uint32_t> free_slots_;
   std::size_t live_ = 0;
 };
 
