@@ -98,7 +98,7 @@ class AdvancingFront {
     result_.points.assign(points.begin(), points.end());
     for (const FrontEdge& e : front) sizing_.at(edge_length(e.a, e.b), midpoint(e.a, e.b));
     update_bound();
-    const std::size_t reserve = static_cast<std::size_t>(std::min<std::uint64_t>(limit_ / 3 + 16, 1u << 26));
+    const std::size_t reserve = static_cast<std::size_t>(std::min<std::uint64_t>(limit_ / 3 + 16, 1u << 22));
     result_.points.reserve(points.size() + reserve / 2);
     result_.triangles.reserve(reserve);
     front_.reserve(points.size() + reserve / 2, 2 * front.size() + 1024);  // slots are reused: the front, not the mesh
@@ -113,6 +113,7 @@ class AdvancingFront {
         assert(user_cap_ != 0 && user_cap_ <= triangles() && "the (3.3.4) bound was reached");
         break;
       }
+      if (result_.points.size() >= no_id - 1) break;  // vertex ids are 32-bit: return the rest
       if (!advance(e)) break;  // impossible with exact signs (Lemma 3.3.1); the rest is returned
       if (triangles() % report_every == 0) report(progress_, "advancing front", triangles(), limit_);
     }
