@@ -14,6 +14,7 @@
 #include <map>
 #include <numbers>
 #include <set>
+#include <tuple>
 #include <utility>
 #include <vector>
 
@@ -233,6 +234,26 @@ void expect_valid_mesh(const Polygon& p, const AdvancingFrontResult& r) {
     EXPECT_TRUE(edges.count({std::min(e.a, e.b), std::max(e.a, e.b)})) << "front edge " << e.a << " -> " << e.b << " lost";
 }
 
+/// The same triangles over only the points they use, renumbered in order of first use; the
+/// polygon's points and edges are renumbered alike (its points must all be used).
+AdvancingFrontResult compacted(const AdvancingFrontResult& r, Polygon& p) {
+  std::map<std::uint32_t, std::uint32_t> id;
+  AdvancingFrontResult c;
+  c.stats = r.stats;
+  const auto use = [&](std::uint32_t v) {
+    const auto [it, fresh] = id.try_emplace(v, static_cast<std::uint32_t>(c.points.size()));
+    if (fresh) c.points.push_back(r.points[v]);
+    return it->second;
+  };
+  for (const auto& t : r.triangles) c.triangles.push_back({use(t[0]), use(t[1]), use(t[2])});
+  Polygon q = p;
+  q.points = c.points;
+  for (FrontEdge& e : q.front) e = FrontEdge{id.at(e.a), id.at(e.b)};
+  for (auto& [a, b] : q.segments) std::tie(a, b) = std::pair{id.at(a), id.at(b)};
+  p = q;
+  return c;
+}
+
 /// Mode A with a uniform size s: nodes at least min(d0, (sqrt3/4) s) apart (digest B §3.6.4),
 /// and no more triangles than (3.3.4) allows with that delta.
 void expect_spacing_and_bound(const Polygon& p, const AdvancingFrontResult& r, double s) {
@@ -276,6 +297,38 @@ TEST(AftShapes, CombWithCoarseSizeCompletes) {
   // Not a correctness property, but this case exists to exercise it: the local search fails
   // between the teeth and the exact global retry must find the triangle.
   EXPECT_GT(r.stats.global_retries, 0u);
+}
+TEST(AftShapes, TwoSquaresSharingACorner) {
+  // The shared corner is one vertex with two incoming and two outgoing front edges.
+  Polygon p = loops({{{0, 0}, {1, 0}, {1, 1}, {0, 1}}}, 0.125);
+  const auto corner = static_cast<std::uint32_t>(16);  // (1, 1): 8 points per side, 0-based
+  ASSERT_EQ(p.points[corner], (Point2{1, 1}));
+  const std::vector<Point2> other{{1, 1}, {2, 1}, {2, 2}, {1, 2}};
+  Polygon q = loops({other}, 0.125);
+  const auto shift = static_cast<std::uint32_t>(p.points.size());
+  const auto renumber = [&](std::uint32_t v) { return v == 0 ? corner : v + shift - 1; };
+  for (std::size_t v = 1; v < q.points.size(); ++v) p.points.push_back(q.points[v]);
+  for (const FrontEdge& e : q.front) p.front.push_back({renumber(e.a), renumber(e.b)});
+  for (const auto& [a, b] : q.segments) p.segments.emplace_back(renumber(a), renumber(b));
+  p.area += q.area;
+  const AdvancingFrontResult r = advance_front_2(p.points, p.front, uniform(0.125));
+  ASSERT_TRUE(r.stats.completed);
+  expect_spacing_and_bound(p, r, 0.125);
+  // The certificate refuses a non-manifold boundary vertex by design, so each square's
+  // triangles are certified against that square alone (a triangle cannot reach both).
+  AdvancingFrontResult first = r, second = r;
+  first.triangles.clear();
+  second.triangles.clear();
+  for (const auto& t : r.triangles) {
+    const double x = r.points[t[0]].x + r.points[t[1]].x + r.points[t[2]].x;
+    (x > 3.0 ? second : first).triangles.push_back(t);  // centroid right of x = 1
+  }
+  Polygon p1 = square(0.125), p2 = p;
+  p2.front.assign(p.front.begin() + 32, p.front.end());
+  p2.segments.assign(p.segments.begin() + 32, p.segments.end());
+  p2.area = q.area;
+  expect_valid_mesh(p1, compacted(first, p1));
+  expect_valid_mesh(p2, compacted(second, p2));
 }
 TEST(AftShapes, SquareWithACut) { expect_meshes(square_with_cut(1.0 / 16), 1.0 / 16); }
 TEST(AftShapes, AutomaticGrowth) {
@@ -449,7 +502,9 @@ RC_GTEST_PROP(AftRandom, StarShapedPolygonsAreMeshedAndCertified, ()) {
   Polygon p = star(gaps, radii, step);
   for (Point2& q : p.points) q = Point2{q.x * scale, q.y * scale};
   p.area *= scale * scale;
-  const AdvancingFrontResult r = advance_front_2(p.points, p.front, uniform(step * scale));
+  AdvancingFrontOptions o = uniform(step * scale);
+  if (*rc::gen::arbitrary<bool>()) o.size = SizePolicy{{}, 0.0, *rc::gen::element(1.0, 1.2, 1.5)};  // mode B
+  const AdvancingFrontResult r = advance_front_2(p.points, p.front, o);
   RC_ASSERT(r.stats.completed);
   const io::MeshData domain = domain_of(p);
   const certificate::Report report = certificate::check_mesh(mesh_of(r), &domain);
