@@ -6,6 +6,7 @@
 #include "exact_range.h"
 #include "expansion_determinants.h"
 #include "integer_matrix.h"
+#include "sos_2d.h"
 
 namespace certimesh::predicates {
 namespace detail {
@@ -59,8 +60,8 @@ Sign incircle_exact_stage(const Point2& a, const Point2& b, const Point2& c, con
 Sign incircle_sos(const Point2& a, const Point2& b, const Point2& c, const Point2& d) {
   const Sign s = incircle(a, b, c, d);
   if (s != Sign::zero || a == b || a == c || a == d || b == c || b == d || c == d) return s;
-  const std::array<double, 8> raw{a.x, a.y, b.x, b.y, c.x, c.y, d.x, d.y};
-  return detail::perturbed_sign(raw, 2, true);
+  // The generic search (detail::perturbed_sign) would give the same answer with GMP minors.
+  return detail::cocircular_incircle_sos(a, b, c, d);
 }
 
 }  // namespace certimesh::predicates

@@ -8,6 +8,7 @@
 #include "exact_range.h"
 #include "expansion_determinants.h"
 #include "integer_matrix.h"
+#include "sos_2d.h"
 
 namespace certimesh::predicates {
 namespace detail {
@@ -65,8 +66,8 @@ Sign orient2d_exact_stage(const Point2& a, const Point2& b, const Point2& c) {
 Sign orient2d_sos(const Point2& a, const Point2& b, const Point2& c) {
   const Sign s = orient2d(a, b, c);
   if (s != Sign::zero || a == b || b == c || a == c) return s;
-  const std::array<double, 6> raw{a.x, a.y, b.x, b.y, c.x, c.y};
-  return detail::perturbed_sign(raw, 2, false);
+  // The generic search (detail::perturbed_sign) would give the same answer with GMP minors.
+  return detail::collinear_orient2d_sos(a, b, c);
 }
 
 }  // namespace certimesh::predicates
