@@ -51,7 +51,7 @@ mpq_class overlap_area(const Box& a, const Box& b) {
   return (w > 0 && h > 0) ? mpq_class(w * h) : mpq_class(0);
 }
 
-TEST(ConstructiveGeometry, OverlappingRectanglesExactAreas) {
+TEST(dom_ConstructiveGeometry, OverlappingRectanglesExactAreas) {
   const Region2 a = rectangle_region(0, 0, 3, 2), b = rectangle_region(1, 1, 4, 3);
   EXPECT_EQ(exact_area(region_union(a, b)), 10);
   EXPECT_EQ(exact_area(region_difference(a, b)), 4);
@@ -63,7 +63,7 @@ TEST(ConstructiveGeometry, OverlappingRectanglesExactAreas) {
   }
 }
 
-RC_GTEST_PROP(ConstructiveGeometryProperty, DyadicRectanglesExactAreas, ()) {
+RC_GTEST_PROP(dom_ConstructiveGeometryProperty, DyadicRectanglesExactAreas, ()) {
   // Corners on the grid of 1/8 in [-4, 4]: every crossing of rectangle edges is such a point.
   auto coordinate = [] { return *rc::gen::inRange(-32, 33) / 8.0; };
   auto box = [&] {
@@ -83,7 +83,7 @@ RC_GTEST_PROP(ConstructiveGeometryProperty, DyadicRectanglesExactAreas, ()) {
   RC_ASSERT(validate_domain(d).empty());
 }
 
-TEST(ConstructiveGeometry, FarFromTheOriginStillExact) {
+TEST(dom_ConstructiveGeometry, FarFromTheOriginStillExact) {
   // Rectangles near 2^20: the snap distance follows the operands' size, not their magnitude.
   const double o = 1048576;
   const Region2 a = rectangle_region(o, o, o + 0.75, o + 0.5), b = rectangle_region(o + 0.25, o + 0.125, o + 1, o + 1);
@@ -92,7 +92,7 @@ TEST(ConstructiveGeometry, FarFromTheOriginStillExact) {
   EXPECT_TRUE(validate_domain(to_planar_domain(region_difference(a, b))).empty());
 }
 
-TEST(ConstructiveGeometry, DiscAreasApproximately) {
+TEST(dom_ConstructiveGeometry, DiscAreasApproximately) {
   const double r = 1, step = 0.01;
   const Region2 a = disc_region({0, 0}, r, step), b = disc_region({1, 0}, r, step);
   // Lens of two unit discs at distance 1: 2 pi/3 - sqrt(3)/2.
@@ -105,7 +105,7 @@ TEST(ConstructiveGeometry, DiscAreasApproximately) {
   EXPECT_TRUE(validate_domain(to_planar_domain(region_union(a, b))).empty());
 }
 
-RC_GTEST_PROP(ConstructiveGeometryProperty, RandomDiscsGiveValidDomains, ()) {
+RC_GTEST_PROP(dom_ConstructiveGeometryProperty, RandomDiscsGiveValidDomains, ()) {
   // Centres and radii on a 1/64 grid (shrinkable); boundaries of three discs in general and in
   // special position (equal radii, common tangents, shared centres) alike.
   auto value = [](int lo, int hi) { return *rc::gen::inRange(lo, hi) / 64.0; };
@@ -132,14 +132,14 @@ RC_GTEST_PROP(ConstructiveGeometryProperty, RandomDiscsGiveValidDomains, ()) {
   }
 }
 
-TEST(ConstructiveGeometry, DiscMinusInnerDiscHasItsHolePointInside) {
+TEST(dom_ConstructiveGeometry, DiscMinusInnerDiscHasItsHolePointInside) {
   const Region2 r = region_difference(disc_region({0, 0}, 1, 0.02), disc_region({0.3, 0.1}, 0.05, 0.01));
   const PlanarDomain d = to_planar_domain(r);
   ASSERT_EQ(d.holes.size(), 1u);
   EXPECT_LT(std::hypot(d.holes[0].x - 0.3, d.holes[0].y - 0.1), 0.05);
 }
 
-TEST(ConstructiveGeometry, HolePointsLieStrictlyInTheirHolesNotOnIslands) {
+TEST(dom_ConstructiveGeometry, HolePointsLieStrictlyInTheirHolesNotOnIslands) {
   // A frame [0,10]^2 - [2,8]^2 with an island [4,6]^2 inside its hole.
   const Region2 frame = region_difference(rectangle_region(0, 0, 10, 10), rectangle_region(2, 2, 8, 8));
   const Region2 r = region_union(frame, rectangle_region(4, 4, 6, 6));
@@ -154,7 +154,7 @@ TEST(ConstructiveGeometry, HolePointsLieStrictlyInTheirHolesNotOnIslands) {
   for (const DomainSegment& s : d.segments) EXPECT_EQ(s.label, 3);
 }
 
-TEST(ConstructiveGeometry, RectanglesTouchingAtACornerShareOneVertex) {
+TEST(dom_ConstructiveGeometry, RectanglesTouchingAtACornerShareOneVertex) {
   const Region2 r = region_union(rectangle_region(0, 0, 1, 1), rectangle_region(1, 1, 2, 2));
   const PlanarDomain d = to_planar_domain(r);
   EXPECT_EQ(d.points.size(), 7u);  // (1,1) merged
@@ -162,7 +162,7 @@ TEST(ConstructiveGeometry, RectanglesTouchingAtACornerShareOneVertex) {
   EXPECT_TRUE(validate_domain(d).empty());
 }
 
-TEST(ConstructiveGeometry, RefusalsNameTheProblem) {
+TEST(dom_ConstructiveGeometry, RefusalsNameTheProblem) {
   EXPECT_THROW(rectangle_region(1, 0, 0, 1), std::invalid_argument);
   try {
     polygon_region({{0, 0}, {1, 1}, {1, 0}, {0, 1}});  // a bow tie
@@ -198,7 +198,7 @@ std::filesystem::path write_script(const std::string& name, const std::string& t
   return path;
 }
 
-TEST(DomainCommand, ScriptWritesAValidPolyDomain) {
+TEST(dom_DomainCommand, ScriptWritesAValidPolyDomain) {
   const std::filesystem::path script = write_script("certimesh_dom_plate.csg",
                                                     "# a plate with a round hole and a notch\n"
                                                     "rect plate 0 0 4 2\n"
@@ -218,7 +218,7 @@ TEST(DomainCommand, ScriptWritesAValidPolyDomain) {
   std::filesystem::remove(script);
 }
 
-TEST(DomainCommand, BadScriptsNameFileAndLine) {
+TEST(dom_DomainCommand, BadScriptsNameFileAndLine) {
   const struct {
     const char* text;
     int line;

@@ -28,7 +28,7 @@ std::vector<double> chords(const Polyline2& c) {
   return out;
 }
 
-TEST(Curves, CircleWithAStep) {
+TEST(dom_Curves, CircleWithAStep) {
   const Point2 centre{3, -2};
   const double r = 2.5, step = 0.1;
   const Polyline2 c = discretize_circle(centre, r, CurveSpacing::with_step(step));
@@ -43,7 +43,7 @@ TEST(Curves, CircleWithAStep) {
   EXPECT_EQ(c.points, discretize_circle(centre, r, CurveSpacing::with_step(step)).points);  // deterministic
 }
 
-TEST(Curves, CircleIsCounterclockwise) {
+TEST(dom_Curves, CircleIsCounterclockwise) {
   const Polyline2 c = circle_points({0, 0}, 1, 12);
   double twice_area = 0;
   for (std::size_t i = 0; i < c.points.size(); ++i) {
@@ -63,7 +63,7 @@ double ellipse_residual(const EllipseArc& e, const Point2& p) {
   return (u / e.semi_axis_a) * (u / e.semi_axis_a) + (v / e.semi_axis_b) * (v / e.semi_axis_b) - 1;
 }
 
-TEST(Curves, EllipseArcEndsAtItsAnglesAndStaysOnTheEllipse) {
+TEST(dom_Curves, EllipseArcEndsAtItsAnglesAndStaysOnTheEllipse) {
   const EllipseArc e{{1, 2}, 3, 1, 0.5, 0.25, 2.0};
   const Polyline2 c = discretize_ellipse_arc(e, CurveSpacing::with_step(0.05));
   EXPECT_FALSE(c.closed);
@@ -78,7 +78,7 @@ TEST(Curves, EllipseArcEndsAtItsAnglesAndStaysOnTheEllipse) {
   for (const double chord : chords(c)) EXPECT_NEAR(chord, 0.05, 0.005);
 }
 
-TEST(Curves, CurvatureModePutsMorePointsWhereTheCurveBends) {
+TEST(dom_Curves, CurvatureModePutsMorePointsWhereTheCurveBends) {
   // a = 4, b = 1: radius of curvature b^2/a = 0.25 at (+-4, 0), a^2/b = 16 at (0, +-1).
   const EllipseArc e{{0, 0}, 4, 1, 0, 0, 2 * std::numbers::pi};
   const double tolerance = 0.01;
@@ -103,7 +103,7 @@ TEST(Curves, CurvatureModePutsMorePointsWhereTheCurveBends) {
   EXPECT_GT(near_ends, 4 * near_sides);  // equal x-widths (1), far more points at the ends
 }
 
-TEST(Curves, SplinePassesThroughItsControlPoints) {
+TEST(dom_Curves, SplinePassesThroughItsControlPoints) {
   const std::vector<Point2> control{{0, 0}, {2, 0}, {2, 1}, {1, 2}, {0, 1}};
   for (const bool closed : {false, true}) {
     const Polyline2 c = discretize_spline(control, closed, CurveSpacing::with_step(0.1));
@@ -125,7 +125,7 @@ TEST(Curves, SplinePassesThroughItsControlPoints) {
   }
 }
 
-TEST(Curves, SplineOfCollinearControlPointsIsTheSegment) {
+TEST(dom_Curves, SplineOfCollinearControlPointsIsTheSegment) {
   // Uniform Catmull-Rom through equally spaced collinear points is the straight line.
   const Polyline2 c = discretize_spline({{0, 0}, {1, 0}, {2, 0}, {3, 0}}, false, CurveSpacing::with_step(0.25));
   EXPECT_EQ(c.points.size(), 13u);
@@ -133,7 +133,7 @@ TEST(Curves, SplineOfCollinearControlPointsIsTheSegment) {
   for (std::size_t i = 1; i < c.points.size(); ++i) EXPECT_GT(c.points[i].x, c.points[i - 1].x);
 }
 
-TEST(Curves, AddCurveAppendsAChainOrALoop) {
+TEST(dom_Curves, AddCurveAppendsAChainOrALoop) {
   PlanarDomain d;
   d.points = {{9, 9}};
   const DomainVertex first = add_closed_curve(d, {{0, 0}, {1, 0}, {0, 1}}, 5);
@@ -145,7 +145,7 @@ TEST(Curves, AddCurveAppendsAChainOrALoop) {
   EXPECT_EQ(d.segments.back(), (DomainSegment{5, 6, 2}));
 }
 
-TEST(Curves, BadParametersAreRefused) {
+TEST(dom_Curves, BadParametersAreRefused) {
   EXPECT_THROW(discretize_circle({0, 0}, -1, CurveSpacing::with_step(0.1)), std::invalid_argument);
   EXPECT_THROW(discretize_circle({0, 0}, 1, CurveSpacing::with_step(0)), std::invalid_argument);
   EXPECT_THROW(discretize_circle({0, 0}, 1, CurveSpacing::with_step(1e-9)), std::invalid_argument);  // 6e9 pieces

@@ -119,14 +119,14 @@ DomainProblem only_problem_of(const std::vector<DomainProblem>& problems, Domain
 
 // ---- hand cases, one per kind ----------------------------------------------------------------
 
-TEST(DomainValidation, BuiltInDomainsAreValid) {
+TEST(dom_DomainValidation, BuiltInDomainsAreValid) {
   for (const PlanarDomain& d : {unit_square(), square_with_two_holes(), plate_with_holes_and_crack()}) {
     EXPECT_TRUE(validate_domain(d).empty());
     EXPECT_TRUE(oracle_valid(d));
   }
 }
 
-TEST(DefaultDomains, PlateHasTwoHolesAndACrackWithAFreeTip) {
+TEST(dom_DefaultDomains, PlateHasTwoHolesAndACrackWithAFreeTip) {
   const PlanarDomain d = plate_with_holes_and_crack();
   EXPECT_EQ(d.points.size(), 72u);    // 5 outer, 3 crack, 2 x 32 hole vertices
   EXPECT_EQ(d.segments.size(), 72u);  // 5 outer, 3 crack, 2 x 32 hole segments
@@ -149,7 +149,7 @@ TEST(DefaultDomains, PlateHasTwoHolesAndACrackWithAFreeTip) {
   EXPECT_EQ(s.holes, (std::vector<Point2>{{0.3, 0.5}, {0.7, 0.5}}));
 }
 
-TEST(DomainValidation, CrossingSegmentsNamedWithReadableCoordinates) {
+TEST(dom_DomainValidation, CrossingSegmentsNamedWithReadableCoordinates) {
   PlanarDomain d = polygon({{0, 0}, {1, 0}, {1, 1}, {0, 1}});
   d.points.push_back({0.5, -1});
   d.points.push_back({0.5, 1.5});
@@ -162,7 +162,7 @@ TEST(DomainValidation, CrossingSegmentsNamedWithReadableCoordinates) {
   EXPECT_EQ(problems[1].message, "segments 2 (1 1)-(0 1) and 4 (0.5 -1)-(0.5 1.5) cross");
 }
 
-TEST(DomainValidation, CoordinatesInMessagesReadBackExactly) {
+TEST(dom_DomainValidation, CoordinatesInMessagesReadBackExactly) {
   const double third = 1.0 / 3.0;
   PlanarDomain d = polygon({{0, 0}, {1, 0}, {third, 1}});
   d.points.push_back({third, 1});
@@ -174,7 +174,7 @@ TEST(DomainValidation, CoordinatesInMessagesReadBackExactly) {
   EXPECT_EQ(std::stod(p.message.substr(open + 1)), third) << p.message;
 }
 
-TEST(DomainValidation, CollinearOverlapWithAndWithoutSharedVertex) {
+TEST(dom_DomainValidation, CollinearOverlapWithAndWithoutSharedVertex) {
   PlanarDomain d = polygon({{0, 0}, {4, 0}, {4, 4}, {0, 4}});
   d.points.push_back({1, 0});
   d.points.push_back({2, 0});
@@ -191,7 +191,7 @@ TEST(DomainValidation, CollinearOverlapWithAndWithoutSharedVertex) {
   EXPECT_EQ(p.vertices, (std::vector<std::uint32_t>{0}));
 }
 
-TEST(DomainValidation, VertexInsideASegmentIsATJunction) {
+TEST(dom_DomainValidation, VertexInsideASegmentIsATJunction) {
   PlanarDomain d = polygon({{0, 0}, {2, 0}, {2, 2}, {0, 2}});
   d.points.push_back({1, 0});  // exactly inside the bottom edge
   d.points.push_back({1, 1});
@@ -202,7 +202,7 @@ TEST(DomainValidation, VertexInsideASegmentIsATJunction) {
   EXPECT_EQ(p.message, "vertex 4 (1 0) of segment 4 lies inside segment 0 (0 0)-(2 0)");
 }
 
-TEST(DomainValidation, NearlyOnASegmentIsNotOnIt) {
+TEST(dom_DomainValidation, NearlyOnASegmentIsNotOnIt) {
   // 2^-60 above the bottom edge: a tolerance would call it a T-junction; the exact test does not.
   PlanarDomain d = polygon({{0, 0}, {2, 0}, {2, 2}, {0, 2}});
   d.points.push_back({1, 0x1p-60});
@@ -211,7 +211,7 @@ TEST(DomainValidation, NearlyOnASegmentIsNotOnIt) {
   EXPECT_TRUE(validate_domain(d).empty());
 }
 
-TEST(DomainValidation, ZeroLengthSegments) {
+TEST(dom_DomainValidation, ZeroLengthSegments) {
   PlanarDomain d = polygon({{0, 0}, {1, 0}, {0, 1}});
   d.segments.push_back({1, 1, 1});
   DomainProblem p = only_problem_of(validate_domain(d), DomainProblemKind::zero_length_segment);
@@ -225,7 +225,7 @@ TEST(DomainValidation, ZeroLengthSegments) {
   EXPECT_EQ(p.vertices, (std::vector<std::uint32_t>{1, 3}));
 }
 
-TEST(DomainValidation, DuplicateSegmentsInEitherDirection) {
+TEST(dom_DomainValidation, DuplicateSegmentsInEitherDirection) {
   PlanarDomain d = polygon({{0, 0}, {1, 0}, {0, 1}});
   d.segments.push_back({1, 0, 7});
   const DomainProblem p = only_problem_of(validate_domain(d), DomainProblemKind::duplicate_segments);
@@ -233,7 +233,7 @@ TEST(DomainValidation, DuplicateSegmentsInEitherDirection) {
   EXPECT_EQ(p.message, "segments 0 and 3 both join vertices 0 and 1 (0 0)-(1 0)");
 }
 
-TEST(DomainValidation, NonFiniteCoordinatesAnywhere) {
+TEST(dom_DomainValidation, NonFiniteCoordinatesAnywhere) {
   PlanarDomain d = polygon({{0, 0}, {1, 0}, {0, 1}});
   d.points[1].x = std::numeric_limits<double>::infinity();
   d.holes.push_back({std::nan(""), 0});
@@ -246,7 +246,7 @@ TEST(DomainValidation, NonFiniteCoordinatesAnywhere) {
   EXPECT_TRUE(problems[2].message.starts_with("region point 0"));
 }
 
-TEST(DomainValidation, IndexOutOfRangeAndIsolatedVertex) {
+TEST(dom_DomainValidation, IndexOutOfRangeAndIsolatedVertex) {
   PlanarDomain d = polygon({{0, 0}, {1, 0}, {0, 1}});
   d.points.push_back({5, 5});
   d.segments.push_back({0, 9, 1});
@@ -258,14 +258,14 @@ TEST(DomainValidation, IndexOutOfRangeAndIsolatedVertex) {
   EXPECT_EQ(isolated.message, "vertex 3 (5 5) is on no segment");
 }
 
-TEST(DomainValidation, CapOnTheNumberOfProblems) {
+TEST(dom_DomainValidation, CapOnTheNumberOfProblems) {
   PlanarDomain d = polygon({{0, 0}, {1, 0}, {0, 1}});
   for (int i = 0; i < 50; ++i) d.points.push_back({10.0 + i, 0});
   EXPECT_EQ(validate_domain(d, 16).size(), 16u);
   EXPECT_EQ(validate_domain(d, 100).size(), 50u);
 }
 
-TEST(DomainValidation, InvalidDomainWhatNamesTheFirstProblem) {
+TEST(dom_DomainValidation, InvalidDomainWhatNamesTheFirstProblem) {
   const InvalidDomain e({DomainProblem{DomainProblemKind::segments_cross, {1, 2}, {}, "segments 1 and 2 cross"},
                          DomainProblem{DomainProblemKind::isolated_vertex, {}, {4}, "vertex 4 is on no segment"}});
   EXPECT_STREQ(e.what(), "invalid domain: segments 1 and 2 cross (and 1 more problem)");
@@ -274,7 +274,7 @@ TEST(DomainValidation, InvalidDomainWhatNamesTheFirstProblem) {
 
 // ---- .poly conversion ----------------------------------------------------------------------
 
-TEST(DomainMeshData, PolyFileRoundTripIsExact) {
+TEST(dom_DomainMeshData, PolyFileRoundTripIsExact) {
   PlanarDomain d = plate_with_holes_and_crack();
   d.regions.push_back({{0.25, 0.25}, 7});
   const std::filesystem::path path = std::filesystem::temp_directory_path() / "certimesh_dom_round_trip.poly";
@@ -287,7 +287,7 @@ TEST(DomainMeshData, PolyFileRoundTripIsExact) {
   EXPECT_EQ(back.regions, d.regions);
 }
 
-TEST(DomainMeshData, StructuralRefusals) {
+TEST(dom_DomainMeshData, StructuralRefusals) {
   io::MeshData m;
   m.dimension = 3;
   try {
@@ -328,21 +328,21 @@ TEST(DomainMeshData, StructuralRefusals) {
 
 // ---- generated domains -----------------------------------------------------------------------
 
-RC_GTEST_PROP(DomainValidationProperty, GeneratedValidDomainsPass, ()) {
+RC_GTEST_PROP(dom_DomainValidationProperty, GeneratedValidDomainsPass, ()) {
   const fuzz::PlanarDomainCase c = *fuzz::valid_planar_domain(400);
   const std::vector<DomainProblem> problems = validate_domain(c.domain);
   for (const DomainProblem& p : problems) RC_LOG() << p.message << "\n";
   RC_ASSERT(problems.empty());
 }
 
-RC_GTEST_PROP(DomainValidationProperty, OracleAgreesOnSmallGeneratedDomains, ()) {
+RC_GTEST_PROP(dom_DomainValidationProperty, OracleAgreesOnSmallGeneratedDomains, ()) {
   const bool valid = *rc::gen::arbitrary<bool>();
   const fuzz::PlanarDomainCase c = valid ? *fuzz::valid_planar_domain(40) : *fuzz::invalid_planar_domain(40);
   if (c.domain.points.size() > 150) return;  // the cocircular family has a fixed inner ring
   RC_ASSERT(validate_domain(c.domain).empty() == oracle_valid(c.domain));
 }
 
-RC_GTEST_PROP(DomainValidationProperty, GeneratedInvalidDomainsAreRefusedWithTheRightKindAndIds, ()) {
+RC_GTEST_PROP(dom_DomainValidationProperty, GeneratedInvalidDomainsAreRefusedWithTheRightKindAndIds, ()) {
   const fuzz::PlanarDomainCase c = *fuzz::invalid_planar_domain(300);
   const std::vector<DomainProblem> problems = validate_domain(c.domain);
   if (c.expected == DomainProblemKind::open_boundary) {
@@ -364,7 +364,7 @@ RC_GTEST_PROP(DomainValidationProperty, GeneratedInvalidDomainsAreRefusedWithThe
   RC_ASSERT(named);
 }
 
-TEST(DomainValidation, ManySegmentsValidateQuickly) {
+TEST(dom_DomainValidation, ManySegmentsValidateQuickly) {
   // A disc of kLargeSegments / 2 edges with 100 round holes of kLargeSegments / 200 edges each
   // and one radial crack: short edges, as boundaries to be meshed have. (A spiky random star
   // of 10^5 edges is the bounding-box broad phase's worst case: ~10 s, see docs/domains.md.)
