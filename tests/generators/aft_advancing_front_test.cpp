@@ -13,6 +13,7 @@
 #include <cstdlib>
 #include <map>
 #include <numbers>
+#include <numeric>
 #include <set>
 #include <tuple>
 #include <utility>
@@ -474,6 +475,9 @@ TEST(AftErrors, InvalidFrontsAreRefusedWithTheirPlace) {
   twice.push_back(FrontEdge{1, 0});
   twice.push_back(FrontEdge{0, 1});
   refuses(twice, "listed twice");
+  std::vector<FrontEdge> clockwise;
+  for (const FrontEdge& e : p.front) clockwise.push_back(FrontEdge{e.b, e.a});
+  refuses(clockwise, "clockwise");
   AdvancingFrontOptions bad = uniform(0.25);
   bad.size.growth = 0.5;
   EXPECT_THROW(advance_front_2(p.points, p.front, bad), std::invalid_argument);
@@ -497,6 +501,9 @@ RC_GTEST_PROP(AftRandom, StarShapedPolygonsAreMeshedAndCertified, ()) {
   const int n = *rc::gen::inRange(3, 24);
   const auto gaps = *rc::gen::container<std::vector<double>>(static_cast<std::size_t>(n), rc::gen::map(rc::gen::inRange(1, 100), [](int g) { return static_cast<double>(g); }));
   const auto radii = *rc::gen::container<std::vector<double>>(static_cast<std::size_t>(n), rc::gen::map(rc::gen::inRange(30, 101), [](int r) { return r / 100.0; }));
+  // Every angular gap below a half turn: otherwise the corners turn clockwise around the
+  // polygon and the loop is not a front (refused: see InvalidFrontsAreRefusedWithTheirPlace).
+  RC_PRE(2.0 * *std::max_element(gaps.begin(), gaps.end()) < std::accumulate(gaps.begin(), gaps.end(), 0.0));
   const double step = *rc::gen::element(0.05, 0.1, 0.2);
   const double scale = *rc::gen::element(1.0, std::ldexp(1.0, -30), std::ldexp(1.0, 40));
   Polygon p = star(gaps, radii, step);

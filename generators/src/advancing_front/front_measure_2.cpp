@@ -143,6 +143,16 @@ FrontMeasure measure_front(std::span<const Point2> points, std::span<const Front
     m.area += 0.5 * ((a.x - o.x) * (b.y - o.y) - (a.y - o.y) * (b.x - o.x));
     m.perimeter += std::hypot(b.x - a.x, b.y - a.y);
   }
+  // F(P) of a bounded polygon encloses a positive area; a computed area <= 0 would take a
+  // polygon thinner than the rounding of its own shoelace sum, so this refuses only fronts
+  // with the region on the wrong side.
+  if (!(m.area > 0.0)) {
+    std::ostringstream why;
+    why.precision(17);
+    why << "the front encloses no area (signed area " << m.area
+        << "): an outer loop runs clockwise, or the region is on the right of the edges";
+    refuse(why.str());
+  }
   m.components = count_components(points.size(), front);
   m.least_distance = least_distance(points, front, median_edge_length(points, front));
   return m;

@@ -11,7 +11,8 @@ namespace certimesh::generators::advancing_front_detail {
 
 /// Throws std::invalid_argument when an edge names a missing vertex or the same vertex
 /// twice, an edge is listed twice, a coordinate is not finite, a vertex has in-degree !=
-/// out-degree (the front is not closed), or two front vertices coincide.
+/// out-degree (the front is not closed), two front vertices coincide, or the signed area
+/// is not positive (an outer loop clockwise).
 FrontMeasure measure_front(std::span<const Point2> points, std::span<const FrontEdge> front);
 
 /// The median length of the front edges (the grids' natural cell size); 0 for no edges.

@@ -66,7 +66,7 @@ struct AdvancingFrontResult {
 /// Throws std::invalid_argument, naming the edge or vertices, for a front that is not one:
 /// an index out of range, an edge from a vertex to itself or listed twice, a non-finite
 /// coordinate, a vertex whose in- and out-degrees differ (not closed), two front vertices at
-/// the same point; and for growth < 1 or a size function value that is not positive and
+/// the same point, a front enclosing no positive area (an outer loop clockwise); and for growth < 1 or a size function value that is not positive and
 /// finite. Points no front edge uses are copied to the result and otherwise ignored.
 AdvancingFrontResult advance_front_2(std::span<const Point2> points, std::span<const FrontEdge> front,
                                      const AdvancingFrontOptions& options,
