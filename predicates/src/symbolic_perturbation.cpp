@@ -1,4 +1,6 @@
-// The perturbation scheme is documented in symbolic_perturbation.h.
+// The perturbation scheme is documented in symbolic_perturbation.h. This is its literal,
+// generic evaluation; orient3d and insphere use it, and it is the oracle of the 2D fast path
+// (sos_2d.cpp, tests/predicates/sos_2d_test.cpp).
 #include "certimesh/predicates/symbolic_perturbation.h"
 
 #include <algorithm>

@@ -18,7 +18,9 @@
 // coefficient +-1: the sign is never zero when the points are distinct.
 //
 // Cost: one exact determinant when it is non-zero. For degenerate input, a few exact
-// minors in GMP integers (rarely more than three; at most 501 for insphere).
+// minors in GMP integers (rarely more than three; at most 501 for insphere) -- except in 2D,
+// where orient2d_sos and incircle_sos reach the same answer by coordinate comparisons and at
+// most one exact orient2d (src/sos_2d.cpp derives why the search always ends there).
 #pragma once
 
 #include <span>
