@@ -519,5 +519,41 @@ RC_GTEST_PROP(AftRandom, StarShapedPolygonsAreMeshedAndCertified, ()) {
   RC_ASSERT(r.triangles.size() <= r.stats.triangle_bound);
 }
 
+void expect_certified(const Polygon& p, const AdvancingFrontResult& r) {
+  RC_ASSERT(r.stats.completed);
+  const io::MeshData domain = domain_of(p);
+  const certificate::Report report = certificate::check_mesh(mesh_of(r), &domain);
+  RC_ASSERT(report.valid);
+  RC_ASSERT(r.triangles.size() <= r.stats.triangle_bound);
+}
+
+RC_GTEST_PROP(AftRandom, CombsAtAnySizeAreMeshedAndCertified, ()) {
+  // Sizes from the boundary step to 16x the tooth width: coarse ones fail locally between
+  // the teeth and need the exact global retry.
+  const int teeth = *rc::gen::inRange(1, 7);
+  const double w = *rc::gen::element(0.05, 0.1, 0.125);
+  const double step = w / *rc::gen::element(1.0, 2.0, 4.0);
+  const Polygon p = comb(teeth, w, step);
+  const double size = step * *rc::gen::element(1.0, 2.0, 8.0, 32.0);
+  AdvancingFrontOptions o = uniform(size);
+  if (*rc::gen::arbitrary<bool>()) o.size.growth = *rc::gen::element(1.0, 1.5);
+  expect_certified(p, advance_front_2(p.points, p.front, o));
+}
+
+RC_GTEST_PROP(AftRandom, PolygonsWithAStarHoleAreMeshedAndCertified, ()) {
+  const int n = *rc::gen::inRange(3, 12);
+  std::vector<Point2> hole;
+  for (int i = 0; i < n; ++i) {  // clockwise, radii 0.2..0.5 around (0.1, -0.05)
+    const double r = *rc::gen::inRange(20, 51) / 100.0, angle = -2.0 * std::numbers::pi * i / n;
+    hole.push_back(Point2{0.1 + r * std::cos(angle), -0.05 + r * std::sin(angle)});
+  }
+  const double step = *rc::gen::element(0.05, 0.1);
+  Polygon p = loops({{{-1, -1}, {1, -1}, {1, 1}, {-1, 1}}, hole}, step);
+  p.holes.push_back(Point2{0.1, -0.05});
+  AdvancingFrontOptions o = uniform(step);
+  if (*rc::gen::arbitrary<bool>()) o.size = SizePolicy{{}, 0.0, *rc::gen::element(1.0, 1.3)};  // mode B
+  expect_certified(p, advance_front_2(p.points, p.front, o));
+}
+
 }  // namespace
 }  // namespace certimesh::generators
