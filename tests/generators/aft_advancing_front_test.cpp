@@ -271,8 +271,8 @@ void expect_meshes(const Polygon& p, double s) {
   expect_spacing_and_bound(p, r, s);
 }
 
-TEST(AftShapes, SquareIsCertifiedSpacedAndBounded) { expect_meshes(square(1.0 / 32), 1.0 / 32); }
-TEST(AftShapes, SquareWithAGrowingSizeFunction) {
+TEST(aft_Shapes, SquareIsCertifiedSpacedAndBounded) { expect_meshes(square(1.0 / 32), 1.0 / 32); }
+TEST(aft_Shapes, SquareWithAGrowingSizeFunction) {
   const Polygon p = square(1.0 / 32);
   AdvancingFrontOptions o;
   o.size.size_function = [](const Point2& q) { return 1.0 / 32 + 0.2 * q.x * q.y; };
@@ -280,17 +280,17 @@ TEST(AftShapes, SquareWithAGrowingSizeFunction) {
   expect_valid_mesh(p, r);
   expect_spacing_and_bound(p, r, 1.0 / 32);
 }
-TEST(AftShapes, DiscPolygon) {
+TEST(aft_Shapes, DiscPolygon) {
   Polygon p = loops({regular_polygon(0.25, -0.5, 1.0, 64, false)}, 0.1);
   expect_meshes(p, 0.1);
 }
-TEST(AftShapes, AnnulusWithAHole) { expect_meshes(annulus(0.08), 0.08); }
-TEST(AftShapes, LShape) { expect_meshes(l_shape(0.0625), 0.0625); }
-TEST(AftShapes, CombCompletes) {
+TEST(aft_Shapes, AnnulusWithAHole) { expect_meshes(annulus(0.08), 0.08); }
+TEST(aft_Shapes, LShape) { expect_meshes(l_shape(0.0625), 0.0625); }
+TEST(aft_Shapes, CombCompletes) {
   const Polygon p = comb(12, 0.05, 0.025);
   expect_meshes(p, 0.025);
 }
-TEST(AftShapes, CombWithCoarseSizeCompletes) {
+TEST(aft_Shapes, CombWithCoarseSizeCompletes) {
   // The size is 8x the tooth width: every step near the teeth falls back on front vertices.
   const Polygon p = comb(10, 0.05, 0.05);
   const AdvancingFrontResult r = advance_front_2(p.points, p.front, uniform(0.4));
@@ -299,7 +299,7 @@ TEST(AftShapes, CombWithCoarseSizeCompletes) {
   // between the teeth and the exact global retry must find the triangle.
   EXPECT_GT(r.stats.global_retries, 0u);
 }
-TEST(AftShapes, TwoSquaresSharingACorner) {
+TEST(aft_Shapes, TwoSquaresSharingACorner) {
   // The shared corner is one vertex with two incoming and two outgoing front edges.
   Polygon p = loops({{{0, 0}, {1, 0}, {1, 1}, {0, 1}}}, 0.125);
   const auto corner = static_cast<std::uint32_t>(16);  // (1, 1): 8 points per side, 0-based
@@ -331,8 +331,8 @@ TEST(AftShapes, TwoSquaresSharingACorner) {
   expect_valid_mesh(p1, compacted(first, p1));
   expect_valid_mesh(p2, compacted(second, p2));
 }
-TEST(AftShapes, SquareWithACut) { expect_meshes(square_with_cut(1.0 / 16), 1.0 / 16); }
-TEST(AftShapes, AutomaticGrowth) {
+TEST(aft_Shapes, SquareWithACut) { expect_meshes(square_with_cut(1.0 / 16), 1.0 / 16); }
+TEST(aft_Shapes, AutomaticGrowth) {
   const Polygon p = annulus(0.05);
   AdvancingFrontOptions o;
   o.size.growth = 1.3;
@@ -343,7 +343,7 @@ TEST(AftShapes, AutomaticGrowth) {
   EXPECT_LE(static_cast<double>(r.triangles.size()), independent_bound(p, delta));
 }
 
-TEST(AftShapes, SizeWithGrowthLimit) {
+TEST(aft_Shapes, SizeWithGrowthLimit) {
   // Mode A': the size is 16x the boundary step, growth 1.2 limits how fast it is reached;
   // spacing then follows mode B's parameters with s0 = min(d0, s_min).
   const Polygon p = square(1.0 / 64);
@@ -361,7 +361,7 @@ TEST(AftShapes, SizeWithGrowthLimit) {
   EXPECT_GT(longest, 4.0 / 64);
 }
 
-TEST(AftShapes, NearCollinearBoundary) {
+TEST(aft_Shapes, NearCollinearBoundary) {
   // The bottom side's vertices alternate one ulp above and below y = 0: reflex and convex
   // angles of about 1e-16 everywhere, where only exact signs tell the sides apart.
   Polygon p = square(1.0 / 16);
@@ -374,7 +374,7 @@ TEST(AftShapes, NearCollinearBoundary) {
   expect_valid_mesh(p, r);
 }
 
-TEST(AftProperties, Deterministic) {
+TEST(aft_Properties, Deterministic) {
   const Polygon p = annulus(0.05);
   const AdvancingFrontResult a = advance_front_2(p.points, p.front, uniform(0.05));
   const AdvancingFrontResult b = advance_front_2(p.points, p.front, uniform(0.05));
@@ -382,7 +382,7 @@ TEST(AftProperties, Deterministic) {
   EXPECT_EQ(a.points, b.points);  // bit for bit
 }
 
-TEST(AftProperties, PowerOfTwoScalingGivesTheScaledMesh) {
+TEST(aft_Properties, PowerOfTwoScalingGivesTheScaledMesh) {
   const Polygon base = annulus(0.08);
   const AdvancingFrontResult reference = advance_front_2(base.points, base.front, uniform(0.08));
   for (const int exponent : {-30, 40}) {
@@ -401,7 +401,7 @@ TEST(AftProperties, PowerOfTwoScalingGivesTheScaledMesh) {
   }
 }
 
-TEST(AftProperties, ProgressIsReportedAndMonotone) {
+TEST(aft_Properties, ProgressIsReportedAndMonotone) {
   const Polygon p = square(1.0 / 32);
   std::vector<std::uint64_t> done;
   const AdvancingFrontResult r = advance_front_2(p.points, p.front, uniform(1.0 / 32), [&](const Progress& g) {
@@ -435,7 +435,7 @@ void expect_closed_rest(const Polygon& p, const AdvancingFrontResult& r) {
   expect_valid_mesh(p, all);
 }
 
-TEST(AftProperties, TinySizeStopsAtTheCapWithAClosedFront) {
+TEST(aft_Properties, TinySizeStopsAtTheCapWithAClosedFront) {
   const Polygon p = square(0.05);
   AdvancingFrontOptions o = uniform(1e-7);  // ~10^14 triangles: it must stop, not hang
   o.max_triangles = 500;
@@ -444,7 +444,7 @@ TEST(AftProperties, TinySizeStopsAtTheCapWithAClosedFront) {
   expect_closed_rest(p, r);
 }
 
-TEST(AftProperties, StoppedAnnulusAndCutLeaveClosedFronts) {
+TEST(aft_Properties, StoppedAnnulusAndCutLeaveClosedFronts) {
   for (const Polygon& p : {annulus(0.05), square_with_cut(0.05)}) {
     AdvancingFrontOptions o = uniform(0.05);
     o.max_triangles = 137;
@@ -454,7 +454,7 @@ TEST(AftProperties, StoppedAnnulusAndCutLeaveClosedFronts) {
   }
 }
 
-TEST(AftErrors, InvalidFrontsAreRefusedWithTheirPlace) {
+TEST(aft_Errors, InvalidFrontsAreRefusedWithTheirPlace) {
   const Polygon p = square(0.25);
   const auto refuses = [&](std::vector<FrontEdge> front, const char* words) {
     try {
@@ -497,7 +497,7 @@ Polygon star(const std::vector<double>& gaps, const std::vector<double>& radii, 
   return loops({c}, step);
 }
 
-RC_GTEST_PROP(AftRandom, StarShapedPolygonsAreMeshedAndCertified, ()) {
+RC_GTEST_PROP(aft_Random, StarShapedPolygonsAreMeshedAndCertified, ()) {
   const int n = *rc::gen::inRange(3, 24);
   const auto gaps = *rc::gen::container<std::vector<double>>(static_cast<std::size_t>(n), rc::gen::map(rc::gen::inRange(1, 100), [](int g) { return static_cast<double>(g); }));
   const auto radii = *rc::gen::container<std::vector<double>>(static_cast<std::size_t>(n), rc::gen::map(rc::gen::inRange(30, 101), [](int r) { return r / 100.0; }));
@@ -527,7 +527,7 @@ void expect_certified(const Polygon& p, const AdvancingFrontResult& r) {
   RC_ASSERT(r.triangles.size() <= r.stats.triangle_bound);
 }
 
-RC_GTEST_PROP(AftRandom, CombsAtAnySizeAreMeshedAndCertified, ()) {
+RC_GTEST_PROP(aft_Random, CombsAtAnySizeAreMeshedAndCertified, ()) {
   // Sizes from the boundary step to 16x the tooth width: coarse ones fail locally between
   // the teeth and need the exact global retry.
   const int teeth = *rc::gen::inRange(1, 7);
@@ -540,7 +540,7 @@ RC_GTEST_PROP(AftRandom, CombsAtAnySizeAreMeshedAndCertified, ()) {
   expect_certified(p, advance_front_2(p.points, p.front, o));
 }
 
-RC_GTEST_PROP(AftRandom, PolygonsWithAStarHoleAreMeshedAndCertified, ()) {
+RC_GTEST_PROP(aft_Random, PolygonsWithAStarHoleAreMeshedAndCertified, ()) {
   const int n = *rc::gen::inRange(3, 12);
   std::vector<Point2> hole;
   for (int i = 0; i < n; ++i) {  // clockwise, radii 0.2..0.5 around (0.1, -0.05)
