@@ -57,7 +57,17 @@ TEST_P(BothAlgorithms, UnitSquareIsCertifiedAndFollowsTheSize) {
   // Equilateral triangles of side h tile area A with about 4A/(√3 h²) of them.
   const double expected = 4.0 / (std::sqrt(3.0) * 0.05 * 0.05);
   EXPECT_GT(static_cast<double>(m.triangle_count()), 0.6 * expected);
-  EXPECT_LT(static_cast<double>(m.triangle_count()), 1.6 * expected);
+  // Delaunay refinement bounds the longest side by h, so its triangles are smaller on average.
+  EXPECT_LT(static_cast<double>(m.triangle_count()), 2.5 * expected);
+  for (std::size_t t = 0; t < m.triangle_count(); ++t) {
+    for (int i = 0; i < 3; ++i) {
+      const auto a = m.triangles[3 * t + static_cast<std::size_t>(i)];
+      const auto b = m.triangles[3 * t + static_cast<std::size_t>((i + 1) % 3)];
+      const double length = std::hypot(m.coordinates[2 * a] - m.coordinates[2 * b],
+                                       m.coordinates[2 * a + 1] - m.coordinates[2 * b + 1]);
+      EXPECT_LT(length, 1.6 * 0.05) << "triangle " << t;
+    }
+  }
 }
 
 TEST_P(BothAlgorithms, SquareWithHoleAndTwoComponents) {

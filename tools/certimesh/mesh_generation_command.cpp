@@ -73,6 +73,12 @@ void print_summary(const generators::MeshDomainStats2& s, const certificate::Rep
     std::printf(", %llu of them by the Delaunay completion", static_cast<unsigned long long>(s.completed_by_delaunay));
   }
   std::printf("\nquality 12*sqrt(3)*area/perimeter^2: worst %.4f, mean %.4f\n", s.worst_quality, s.mean_quality);
+  if (s.improved_region > 0) {
+    std::printf("improvement: %llu triangles around the worst ones, %llu iterations, %llu local modifications\n",
+                static_cast<unsigned long long>(s.improved_region),
+                static_cast<unsigned long long>(s.improvement_iterations),
+                static_cast<unsigned long long>(s.improvement_operations));
+  }
   double total = 0.0;
   for (const auto& t : s.timings) total += t.seconds;
   std::printf("time: %.3f s (", total);

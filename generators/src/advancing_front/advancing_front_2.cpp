@@ -94,6 +94,7 @@ class AdvancingFront {
         sizing_(options.size, measure_.least_distance),
         grid_(bounds(points, front), grid_cell(points, front, options.size), kMaxGridCells),
         user_cap_(options.max_triangles),
+        retry_cap_(options.max_global_retries),
         progress_(progress) {
     result_.points.assign(points.begin(), points.end());
     for (const FrontEdge& e : front) sizing_.at(edge_length(e.a, e.b), midpoint(e.a, e.b));
@@ -190,6 +191,7 @@ class AdvancingFront {
   bool advance(std::uint32_t e) {
     const Step st = make_step(e);
     if (search(st, false)) return true;
+    if (retry_cap_ != 0 && result_.stats.global_retries >= retry_cap_) return false;  // the rest is returned
     ++result_.stats.global_retries;
     return search(st, true);
   }
@@ -320,6 +322,7 @@ class AdvancingFront {
   FrontGrid2 grid_;
   Front2 front_;
   std::uint64_t user_cap_ = 0, bound_ = 0, limit_ = 0;
+  std::uint64_t retry_cap_ = 0;
   const ProgressCallback& progress_;
   AdvancingFrontResult result_;
   std::uint32_t stamp_ = 0;

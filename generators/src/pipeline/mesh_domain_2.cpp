@@ -12,9 +12,10 @@
 #include "certimesh/generators/domain/domain_validation.h"
 #include "certimesh/generators/improvement/quality_improvement_2.h"
 #include "certimesh/topology/quality.h"
-#include "certimesh/topology/simplex_mesh.h"
 #include "delaunay_completion.h"
 #include "domain_triangulation.h"
+#include "improvement_region.h"
+#include "vertex_smoothing.h"
 #include "refinement_stage.h"
 #include "region_labels.h"
 
@@ -24,6 +25,11 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 using Triangles = std::vector<std::array<std::uint32_t, 3>>;
+
+constexpr int kSmoothingSweeps = 3;  // ideal-point smoothing sweeps before Algorithm 35
+// Full enumerations the advancing front may fall back to (O(front) each) before it hands the
+// rest to the Delaunay completion, which needs no retry.
+constexpr std::uint64_t kMaxGlobalRetries = 256;
 
 // Times the stages (for the statistics only: no decision depends on time).
 class StageClock {
@@ -74,6 +80,7 @@ Generated advancing_front_stage(const detail::DomainTriangulation& dt, const det
                                 StageClock& clock) {
   AdvancingFrontOptions front_options;
   front_options.size = options.size;
+  front_options.max_global_retries = kMaxGlobalRetries;
   AdvancingFrontResult front = advance_front_2(boundary.points, dt.front, front_options, progress);
   clock.lap("advancing front");
   Generated out{std::move(front.points), std::move(front.triangles), {}, 0};
@@ -88,41 +95,21 @@ Generated advancing_front_stage(const detail::DomainTriangulation& dt, const det
   return out;
 }
 
-// Improvement on the mesh model: boundary and cut edges are labelled facets, which the local
-// modifications never change.
+// Improvement where the quality is below the target (improvement_region.h).
 void improvement_stage(Generated& g, const detail::DiscretizedBoundary& boundary, const MeshDomainOptions2& options,
-                       const ProgressCallback& progress) {
-  topology::TriangleMesh2 mesh;
-  mesh.reserve(g.points.size(), g.triangles.size());
-  for (const Point2& p : g.points) mesh.add_vertex({p.x, p.y});
-  for (std::size_t t = 0; t < g.triangles.size(); ++t) {
-    const auto& v = g.triangles[t];
-    mesh.add_element({topology::VertexId{v[0]}, topology::VertexId{v[1]}, topology::VertexId{v[2]}}, g.labels[t]);
-  }
-  for (const DomainSegment& s : boundary.subsegments) {
-    mesh.set_facet_label({topology::VertexId{s.a}, topology::VertexId{s.b}}, 1);
-  }
+                       const ProgressCallback& progress, MeshDomainStats2& stats) {
   ImprovementOptions2 improve;
   improve.size = options.size;
   if (options.target_quality > 0.0) improve.target_quality = options.target_quality;
-  improve_quality_2(mesh, improve, progress);
-  // Back to arrays; vertex ids stay (dead slots are dropped when the output is compacted).
-  g.points.assign(mesh.vertex_slot_count(), Point2{});
-  for (std::uint32_t v = 0; v < mesh.vertex_slot_count(); ++v) {
-    if (mesh.is_live(topology::VertexId{v})) {
-      const auto p = mesh.point(topology::VertexId{v});
-      g.points[v] = {p[0], p[1]};
-    }
-  }
-  g.triangles.clear();
-  g.labels.clear();
-  for (std::uint32_t e = 0; e < mesh.element_slot_count(); ++e) {
-    const topology::ElementId id{e};
-    if (!mesh.is_live(id)) continue;
-    const auto v = mesh.vertices(id);
-    g.triangles.push_back({v[0].value, v[1].value, v[2].value});
-    g.labels.push_back(mesh.label(id));
-  }
+  detail::TriangleSoup soup{std::move(g.points), std::move(g.triangles), std::move(g.labels)};
+  detail::smooth_poor_regions(soup, boundary.subsegments, improve.target_quality, kSmoothingSweeps);
+  const detail::RegionImprovementStats r = detail::improve_bad_region(soup, boundary.subsegments, improve, progress);
+  stats.improved_region = r.region_triangles;
+  stats.improvement_iterations = r.improvement.iterations;
+  for (const std::uint64_t n : r.improvement.successes) stats.improvement_operations += n;
+  g.points = std::move(soup.points);
+  g.triangles = std::move(soup.triangles);
+  g.labels = std::move(soup.labels);
 }
 
 // The output: used vertices only, renumbered in first-use order of their ids (deterministic).
@@ -197,7 +184,7 @@ MeshDomainResult2 mesh_domain_2(const PlanarDomain& domain, const MeshDomainOpti
     clock.lap("delaunay refinement");
   }
   if (options.improve) {
-    improvement_stage(generated, boundary, options, progress);
+    improvement_stage(generated, boundary, options, progress, result.stats);
     clock.lap("improvement");
   }
   result.mesh = to_output(generated, boundary);

@@ -7,5 +7,7 @@ target_sources(certimesh_generators PRIVATE
   ${CMAKE_CURRENT_LIST_DIR}/delaunay_completion.cpp
   ${CMAKE_CURRENT_LIST_DIR}/region_labels.cpp
   ${CMAKE_CURRENT_LIST_DIR}/refinement_stage.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/improvement_region.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/vertex_smoothing.cpp
   ${CMAKE_CURRENT_LIST_DIR}/mesh_domain_2.cpp
 )

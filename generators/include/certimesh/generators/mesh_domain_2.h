@@ -41,6 +41,9 @@ struct MeshDomainStats2 {
   std::uint64_t vertices = 0;
   std::uint64_t triangles = 0;
   std::uint64_t completed_by_delaunay = 0;  // triangles the Delaunay completion added
+  std::uint64_t improved_region = 0;        // triangles the improvement stage worked on
+  std::uint64_t improvement_iterations = 0; // Algorithm 35 iterations
+  std::uint64_t improvement_operations = 0; // local modifications committed
   double worst_quality = 0.0;
   double mean_quality = 0.0;
   std::vector<StageTiming> timings;

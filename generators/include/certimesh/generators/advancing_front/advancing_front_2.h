@@ -44,6 +44,10 @@ struct AdvancingFrontOptions {
   SizePolicy size;
   /// Upper bound on triangles; 0 = the bound (3.3.4) computed from the input.
   std::uint64_t max_triangles = 0;
+  /// Upper bound on global retries (full enumerations, O(front) each); 0 = none. When it is
+  /// reached the front stops and returns the rest, which the Delaunay completion fills: a
+  /// spiky domain then costs O(front) per retry only a bounded number of times.
+  std::uint64_t max_global_retries = 0;
 };
 
 struct AdvancingFrontStats {

@@ -1,0 +1,112 @@
+#include "vertex_smoothing.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "certimesh/predicates/orient2d.h"
+#include "certimesh/topology/quality.h"
+
+namespace certimesh::generators::detail {
+
+namespace {
+
+// Vertex -> incident triangles, by a counting sort (Algorithm 3 of the monograph).
+struct VertexStars {
+  std::vector<std::uint32_t> offset, triangle;
+  explicit VertexStars(const TriangleSoup& m) : offset(m.points.size() + 1, 0) {
+    for (const auto& t : m.triangles)
+      for (const std::uint32_t v : t) ++offset[v + 1];
+    for (std::size_t v = 0; v < m.points.size(); ++v) offset[v + 1] += offset[v];
+    triangle.resize(offset.back());
+    std::vector<std::uint32_t> fill(offset.begin(), offset.end() - 1);
+    for (std::uint32_t t = 0; t < m.triangles.size(); ++t)
+      for (const std::uint32_t v : m.triangles[t]) triangle[fill[v]++] = t;
+  }
+  std::span<const std::uint32_t> of(std::uint32_t v) const {
+    return {triangle.data() + offset[v], offset[v + 1] - offset[v]};
+  }
+};
+
+double quality(const Point2& a, const Point2& b, const Point2& c) {
+  return topology::triangle_quality(topology::Point2d{a.x, a.y}, topology::Point2d{b.x, b.y},
+                                    topology::Point2d{c.x, c.y});
+}
+
+// The two other vertices of triangle t, in counterclockwise order after v.
+std::array<std::uint32_t, 2> link_edge(const std::array<std::uint32_t, 3>& t, std::uint32_t v) {
+  const int i = t[0] == v ? 0 : (t[1] == v ? 1 : 2);
+  return {t[static_cast<std::size_t>((i + 1) % 3)], t[static_cast<std::size_t>((i + 2) % 3)]};
+}
+
+// Worst quality of v's star with v at p; -1 when some triangle is not certainly positive.
+double star_quality(const TriangleSoup& m, std::span<const std::uint32_t> star, std::uint32_t v, const Point2& p) {
+  double worst = 1.0;
+  for (const std::uint32_t t : star) {
+    const auto [a, b] = link_edge(m.triangles[t], v);
+    if (predicates::orient2d(p, m.points[a], m.points[b]) != predicates::Sign::positive) return -1.0;
+    worst = std::min(worst, quality(p, m.points[a], m.points[b]));
+  }
+  return worst;
+}
+
+// Mean of the apexes of the equilateral triangles on the link edges, on v's side.
+Point2 ideal_position(const TriangleSoup& m, std::span<const std::uint32_t> star, std::uint32_t v) {
+  constexpr double kHeight = 0.86602540378443864676;  // √3/2
+  double x = 0.0, y = 0.0;
+  for (const std::uint32_t t : star) {
+    const auto [a, b] = link_edge(m.triangles[t], v);
+    const Point2 pa = m.points[a], pb = m.points[b];
+    const double dx = pb.x - pa.x, dy = pb.y - pa.y;
+    x += 0.5 * (pa.x + pb.x) - kHeight * dy;
+    y += 0.5 * (pa.y + pb.y) + kHeight * dx;
+  }
+  const double n = static_cast<double>(star.size());
+  return {x / n, y / n};
+}
+
+std::vector<std::uint8_t> poor_vertices(const TriangleSoup& m, const VertexStars& stars, double target) {
+  std::vector<std::uint8_t> poor(m.points.size(), 0);
+  for (const auto& t : m.triangles) {
+    if (quality(m.points[t[0]], m.points[t[1]], m.points[t[2]]) < target)
+      for (const std::uint32_t v : t) poor[v] = 1;
+  }
+  std::vector<std::uint8_t> grown = poor;  // one ring more
+  for (std::uint32_t v = 0; v < m.points.size(); ++v) {
+    if (!poor[v]) continue;
+    for (const std::uint32_t t : stars.of(v))
+      for (const std::uint32_t w : m.triangles[t]) grown[w] = 1;
+  }
+  return grown;
+}
+
+}  // namespace
+
+SmoothingStats smooth_poor_regions(TriangleSoup& m, std::span<const DomainSegment> fixed_edges, double target,
+                                   int sweeps) {
+  SmoothingStats stats;
+  const VertexStars stars(m);
+  std::vector<std::uint8_t> movable = poor_vertices(m, stars, target);
+  for (const DomainSegment& s : fixed_edges) movable[s.a] = movable[s.b] = 0;
+  for (int sweep = 0; sweep < sweeps; ++sweep) {
+    for (std::uint32_t v = 0; v < m.points.size(); ++v) {
+      if (!movable[v] || stars.of(v).empty()) continue;
+      ++stats.candidates;
+      const auto star = stars.of(v);
+      const double before = star_quality(m, star, v, m.points[v]);
+      const Point2 ideal = ideal_position(m, star, v);
+      // The ideal point, else halfway to it: the first that strictly improves the star.
+      for (const double step : {1.0, 0.5}) {
+        const Point2 p{m.points[v].x + step * (ideal.x - m.points[v].x), m.points[v].y + step * (ideal.y - m.points[v].y)};
+        if (!std::isfinite(p.x) || !std::isfinite(p.y)) break;
+        if (star_quality(m, star, v, p) > before) {
+          m.points[v] = p;
+          ++stats.moved;
+          break;
+        }
+      }
+    }
+  }
+  return stats;
+}
+
+}  // namespace certimesh::generators::detail

@@ -1,0 +1,28 @@
+// Ideal-point smoothing of the vertices around poor triangles: each free vertex moves toward
+// the mean of the apexes of the equilateral triangles standing on the far edges of its star,
+// and the move is kept only when every triangle of the star stays positively oriented (exact
+// orient2d) and the star's worst quality strictly rises -- so no move can tangle the mesh or
+// lower its quality. Flat arrays, a few sweeps: cheap enough to run before Algorithm 35,
+// which then has far fewer poor triangles to work on.
+#pragma once
+
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include "certimesh/generators/domain/planar_domain.h"
+#include "improvement_region.h"
+
+namespace certimesh::generators::detail {
+
+struct SmoothingStats {
+  std::uint64_t candidates = 0;  // vertex visits
+  std::uint64_t moved = 0;       // moves kept
+};
+
+/// Smooths the free vertices of triangles below `target` (shape quality) and of their
+/// neighbours, `sweeps` times. Vertices of `fixed_edges` never move.
+SmoothingStats smooth_poor_regions(TriangleSoup& mesh, std::span<const DomainSegment> fixed_edges, double target,
+                                   int sweeps);
+
+}  // namespace certimesh::generators::detail
