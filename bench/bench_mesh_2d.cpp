@@ -183,7 +183,8 @@ int main(int argc, char** argv) {
   for (const double h : o.sizes) {
     const Row ours = run_certimesh(h, o);
     print_row(o.delaunay ? "certimesh delaunay" : "certimesh front", ours);
-    std::printf("| (front stage alone) | %g | %zu | %.3f | %.0f | | | |\n", h, ours.triangles, ours.front_seconds,
+    std::printf("| (%s stage alone) | %g | %zu | %.3f | %.0f | | | |\n",
+                o.delaunay ? "delaunay refinement" : "advancing-front", h, ours.triangles, ours.front_seconds,
                 static_cast<double>(ours.triangles) / ours.front_seconds);
     Row peer;
     if (o.gmsh != "none" && run_gmsh(h, o, dir, peer)) {
