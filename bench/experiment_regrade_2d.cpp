@@ -6,12 +6,20 @@
 // operation, worst and mean quality, triangle count and time, beside the monograph's numbers;
 // every result is checked by the certificate against the domain.
 //
-// Boundary edges are split only onto the input segments: the new vertex is the rounding of the
-// exact point of the segment nearest the edge midpoint (design decision 2), so the certificate
-// still finds it on the domain.
+// The boundary trace, by default, is kept as the monograph keeps it (digest D §2.1: boundary
+// nodes "may move only along boundary edges", boundary edges are split and collapsed): kept
+// geometrically, on the input segments. Steiner vertices slide along their input segment,
+// may be collapsed into a neighbour on it, and boundary edges are split on it; every such
+// vertex is the rounding of an exact point of its segment (design decision 2), so the
+// certificate still finds it on the domain. The domain's own vertices (the square's corners,
+// the holes' polygon vertices) never move: unlike the monograph's round holes, ours are
+// polygons (--hole-segments, 16 by default), and their vertices are fixed points of the input.
+// --trace-vertex-for-vertex keeps the old run (no boundary vertex moves or goes; boundary
+// edges split onto the segment nearest the midpoint).
 //
 //   experiment_regrade_2d [--h 0.033] [--max-operations N] [--target Q0] [--basket-size N2]
-//                         [--baskets N3] [--coarsen-straight-boundary]
+//                         [--baskets N3] [--hole-segments N] [--trace-vertex-for-vertex]
+//                         [--coarsen-straight-boundary]
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -24,6 +32,7 @@
 
 #include "certimesh/certificate/check_mesh.h"
 #include "certimesh/generators/domain/default_domains.h"
+#include "certimesh/generators/improvement/input_segments_2.h"
 #include "certimesh/generators/improvement/quality_improvement_2.h"
 #include "certimesh/generators/mesh_domain_2.h"
 #include "certimesh/topology/local_modifications_2.h"
@@ -44,14 +53,16 @@ struct Arguments {
   std::uint32_t basket_size = 0;  // N2; 0: the default (7 %)
   std::uint32_t baskets = 0;      // N3; 0: the default (N2 * N3 just above the count)
   bool coarsen_straight_boundary = false;
+  bool trace_vertex_for_vertex = false;
+  std::size_t hole_segments = 16;
 };
 
 Arguments parse(int argc, char** argv) {
   Arguments a;
   for (int i = 1; i < argc; i += 2) {
     const std::string key = argv[i];
-    if (key == "--coarsen-straight-boundary") {
-      a.coarsen_straight_boundary = true;
+    if (key == "--coarsen-straight-boundary" || key == "--trace-vertex-for-vertex") {
+      (key == "--coarsen-straight-boundary" ? a.coarsen_straight_boundary : a.trace_vertex_for_vertex) = true;
       --i;
       continue;
     }
@@ -64,6 +75,7 @@ Arguments parse(int argc, char** argv) {
     else if (key == "--target") a.target = std::atof(argv[i + 1]);
     else if (key == "--basket-size") a.basket_size = static_cast<std::uint32_t>(std::atoi(argv[i + 1]));
     else if (key == "--baskets") a.baskets = static_cast<std::uint32_t>(std::atoi(argv[i + 1]));
+    else if (key == "--hole-segments") a.hole_segments = std::strtoull(argv[i + 1], nullptr, 10);
     else {
       std::fprintf(stderr, "error: unknown option %s\n", key.c_str());
       std::exit(2);
@@ -151,15 +163,21 @@ struct OperationSet {
 
 int main(int argc, char** argv) {
   const Arguments args = parse(argc, argv);
-  const gen::PlanarDomain domain = gen::square_with_two_holes();
+  if (args.hole_segments < 3) {
+    std::fprintf(stderr, "error: --hole-segments needs at least 3\n");
+    return 2;
+  }
+  const gen::PlanarDomain domain = gen::square_with_two_holes(args.hole_segments);
   gen::MeshDomainOptions2 mesh_options;
   mesh_options.improve = false;
   mesh_options.size.uniform_size = args.h;
   const auto start = gen::mesh_domain_2(domain, mesh_options);
   const double count = static_cast<double>(start.stats.triangles);
   const double scale = size_scale_for_count(count);
-  std::printf("start: %llu triangles (quasi-uniform, h = %g; monograph: 1827); size h(x) = %.4f * d(x)\n",
-              static_cast<unsigned long long>(start.stats.triangles), args.h, scale);
+  std::printf("start: %llu triangles (quasi-uniform, h = %g; monograph: 1827); size h(x) = %.4f * d(x); "
+              "holes: %zu-gons; boundary trace kept %s\n",
+              static_cast<unsigned long long>(start.stats.triangles), args.h, scale, args.hole_segments,
+              args.trace_vertex_for_vertex ? "vertex for vertex" : "on the input segments (vertices slide)");
 
   // The domain as the certificate reads it.
   certimesh::io::MeshData domain_data;
@@ -199,7 +217,8 @@ int main(int argc, char** argv) {
     options.coarsen_straight_boundary = args.coarsen_straight_boundary;
     options.max_operations = args.max_operations > 0 ? args.max_operations : 100 * start.stats.triangles;
     options.size.size_function = [scale](const Point2& p) { return scale * distance_to_holes(p); };
-    options.boundary_projection = projection_onto(domain, mesh);
+    if (args.trace_vertex_for_vertex) options.boundary_projection = projection_onto(domain, mesh);
+    else options.input_segments = gen::input_segments_of(domain);
     const auto t0 = std::chrono::steady_clock::now();
     const auto stats = gen::improve_quality_2(mesh, options);
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();

@@ -107,7 +107,7 @@ ImprovementStats2 improve_quality_2(TriangleMesh2& mesh, const ImprovementOption
   const auto quality = quality_function(options.size);
   const topology::LocalModificationOptions2 lm{quality, options.boundary_projection,
                                                options.collapse_reference, options.minimum_shift_gain,
-                                               options.coarsen_straight_boundary};
+                                               options.coarsen_straight_boundary, options.input_segments};
   improvement::QualityOrder order;
   for (std::uint32_t slot = 0; slot < mesh.element_slot_count(); ++slot)
     if (mesh.is_live(ElementId{slot})) order.insert(ElementId{slot}, element_quality(mesh, ElementId{slot}, quality));

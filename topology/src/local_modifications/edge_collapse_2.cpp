@@ -6,10 +6,13 @@
 // edge vanish; every other triangle of the two stars must stay strictly counterclockwise
 // with the merged vertex, decided exactly. The link condition (the common neighbours of a and
 // b are exactly the two apexes of the edge) refuses duplicate edges and non-manifold stars.
+// A boundary vertex may also merge into a boundary neighbour along their boundary edge, where
+// the options allow the boundary to lose it (may_leave_boundary below).
 #include <algorithm>
 #include <limits>
 
 #include "certimesh/predicates/orient2d.h"
+#include "input_segment_run_2.h"
 #include "local_geometry_2.h"
 
 namespace certimesh::topology {
@@ -32,14 +35,30 @@ bool link_condition_holds(const local::OrderedStar2& star_a, const local::Ordere
   return common == apexes;
 }
 
-// Merges `gone` into `kept` along their open boundary edge, apex c, when gone is a straight
-// boundary vertex: its only constrained edges are its two boundary edges, they carry the same
-// label, and gone lies exactly on the line through kept and its other boundary neighbour
-// `other`. In a valid mesh the two boundary edges cannot overlap, so gone is between kept and
-// other and the boundary polygon keeps its point set.
-std::optional<LocalChange2> collapse_straight_boundary_vertex(TriangleMesh2& mesh, ElementId element, VertexId kept,
-                                                              VertexId gone, VertexId c,
-                                                              const LocalModificationOptions2& options) {
+// Whether the boundary vertex gone, between its boundary neighbours kept and other, may go
+// without the boundary leaving the input: either it lies exactly on the straight line through
+// its neighbours (coarsen_straight_boundary: the boundary polygon keeps its point set), or it
+// is a Steiner vertex inside an input segment that holds both neighbours (input_segments: the
+// new boundary edge (kept, other) joins two points of that segment, as the certificate reads
+// them, so the boundary still lies on the input).
+bool may_leave_boundary(const TriangleMesh2& mesh, VertexId kept, VertexId gone, VertexId other,
+                        const LocalModificationOptions2& options) {
+  const auto p = [&](VertexId v) {
+    const auto q = mesh.point(v);
+    return predicates::Point2{q[0], q[1]};
+  };
+  if (options.coarsen_straight_boundary && predicates::orient2d(p(kept), p(gone), p(other)) == predicates::Sign::zero)
+    return true;
+  return options.input_segments && local::segment_run(mesh, gone, options.input_segments).has_value();
+}
+
+// Merges `gone` into `kept` along their open boundary edge, apex c, when gone is a boundary
+// vertex that may leave (may_leave_boundary): its only constrained edges are its two boundary
+// edges and they carry the same label. In a valid mesh the two boundary edges cannot overlap,
+// so gone is between kept and its other boundary neighbour.
+std::optional<LocalChange2> collapse_boundary_vertex(TriangleMesh2& mesh, ElementId element, VertexId kept,
+                                                     VertexId gone, VertexId c,
+                                                     const LocalModificationOptions2& options) {
   const auto star_gone = local::ordered_star(mesh, gone);
   const auto star_kept = local::ordered_star(mesh, kept);
   if (!star_gone || !star_kept || star_gone->closed) return std::nullopt;
@@ -53,11 +72,7 @@ std::optional<LocalChange2> collapse_straight_boundary_vertex(TriangleMesh2& mes
   }
   const Label boundary_label = mesh.facet_label({gone, kept});
   if (mesh.facet_label({gone, other}) != boundary_label) return std::nullopt;
-  const auto p = [&](VertexId v) {
-    const auto q = mesh.point(v);
-    return predicates::Point2{q[0], q[1]};
-  };
-  if (predicates::orient2d(p(kept), p(gone), p(other)) != predicates::Sign::zero) return std::nullopt;
+  if (!may_leave_boundary(mesh, kept, gone, other, options)) return std::nullopt;
   if (!link_condition_holds(*star_kept, *star_gone, c, c) || mesh.find_facet({kept, other})) return std::nullopt;
 
   std::vector<ElementId> removed{element};
@@ -93,11 +108,12 @@ std::optional<LocalChange2> try_edge_collapse(TriangleMesh2& mesh, ElementId ele
   const auto vs = mesh.vertices(element);
   const VertexId c = vs[static_cast<std::size_t>(local_edge)];
   if (is_constrained_edge(mesh, element, local_edge)) {
-    if (!options.coarsen_straight_boundary || mesh.neighbour(element, local_edge) != no_element) return std::nullopt;
+    const bool may_coarsen = options.coarsen_straight_boundary || options.input_segments;
+    if (!may_coarsen || mesh.neighbour(element, local_edge) != no_element) return std::nullopt;
     const VertexId a = vs[static_cast<std::size_t>((local_edge + 1) % 3)];
     const VertexId b = vs[static_cast<std::size_t>((local_edge + 2) % 3)];
-    if (auto change = collapse_straight_boundary_vertex(mesh, element, a, b, c, options)) return change;
-    return collapse_straight_boundary_vertex(mesh, element, b, a, c, options);
+    if (auto change = collapse_boundary_vertex(mesh, element, a, b, c, options)) return change;
+    return collapse_boundary_vertex(mesh, element, b, a, c, options);
   }
   VertexId kept = vs[static_cast<std::size_t>((local_edge + 1) % 3)];
   VertexId gone = vs[static_cast<std::size_t>((local_edge + 2) % 3)];

@@ -1,8 +1,11 @@
-// Algorithm 30: a node on an edge (local_modifications_2.h).
+// Algorithm 30: a node on an edge (local_modifications_2.h). On a constrained edge the node is
+// the caller's boundary projection (the monograph's F((t1 + t2) / 2)) or, on an input segment,
+// the rounding of an exact point of it (design decision 2); either is then checked exactly.
 #include <algorithm>
 #include <cmath>
 #include <limits>
 
+#include "input_segment_run_2.h"
 #include "local_geometry_2.h"
 
 namespace certimesh::topology {
@@ -19,6 +22,26 @@ void append_halves(const TriangleMesh2& mesh, VertexId c, VertexId a, VertexId b
   }
 }
 
+// The node on the constrained edge (a, b) when both ends are on one input segment: the
+// rounding of the exact point of the segment half-way between the ends' fractions, strictly
+// between them along it. A segment that the edge spans whole (both ends domain vertices) is
+// recognised by asking the caller about the point half-way along (a, b).
+std::optional<Point2d> node_on_input_segment(const Point2d& a, const Point2d& b, const InputSegments2& segments) {
+  auto segment = segments.segment_containing(a);
+  if (!segment) segment = segments.segment_containing(b);
+  if (!segment) {
+    const InputSegment2 whole{a, b};
+    const auto containing = segments.segment_containing(segments.point_on(whole, 0.5));
+    if (!containing || !local::same_segment(*containing, whole)) return std::nullopt;
+    segment = whole;
+  }
+  if (!local::lies_on(a, *segment, segments) || !local::lies_on(b, *segment, segments)) return std::nullopt;
+  const double f = 0.5 * (local::fraction_along(a, *segment) + local::fraction_along(b, *segment));
+  const Point2d at = segments.point_on(*segment, f);
+  if (!local::strictly_between(a, at, b, *segment)) return std::nullopt;
+  return at;
+}
+
 }  // namespace
 
 std::optional<LocalChange2> try_insert_on_edge(TriangleMesh2& mesh, ElementId element, int local_edge,
@@ -28,9 +51,15 @@ std::optional<LocalChange2> try_insert_on_edge(TriangleMesh2& mesh, ElementId el
   const VertexId a = vs[static_cast<std::size_t>((local_edge + 1) % 3)];
   const VertexId b = vs[static_cast<std::size_t>((local_edge + 2) % 3)];
   const bool constrained = is_constrained_edge(mesh, element, local_edge);
-  if (constrained && !options.boundary_projection) return std::nullopt;
+  if (constrained && !options.boundary_projection && !options.input_segments) return std::nullopt;
   Point2d at = local::midpoint(mesh.point(a), mesh.point(b));
-  if (constrained) at = options.boundary_projection(a, b, at);
+  if (constrained && options.boundary_projection) {
+    at = options.boundary_projection(a, b, at);
+  } else if (constrained) {
+    const auto on_segment = node_on_input_segment(mesh.point(a), mesh.point(b), options.input_segments);
+    if (!on_segment) return std::nullopt;
+    at = *on_segment;
+  }
   if (!std::isfinite(at[0]) || !std::isfinite(at[1])) return std::nullopt;
 
   // The new vertex's id is not known before it is added: a placeholder that no live vertex has.

@@ -14,6 +14,7 @@
 #include <tuple>
 #include <utility>
 
+#include "input_segment_run_2.h"
 #include "local_geometry_2.h"
 
 namespace certimesh::topology {
@@ -136,7 +137,10 @@ bool usable(const Point2d& g) {
 
 std::optional<LocalChange2> try_node_shift(TriangleMesh2& mesh, VertexId v,
                                            const LocalModificationOptions2& options) {
-  if (is_trace_vertex(mesh, v)) return std::nullopt;
+  if (is_trace_vertex(mesh, v)) {
+    if (options.input_segments) return local::slide_along_segment(mesh, v, options);
+    return std::nullopt;
+  }
   const auto star = local::ordered_star(mesh, v);
   StarAtPosition at(mesh, v, *star, options);
   const Point2d p = mesh.point(v);

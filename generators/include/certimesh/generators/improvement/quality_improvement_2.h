@@ -6,7 +6,8 @@
 // decided by exact orientation signs, never by a tolerance.
 //
 // The boundary trace is kept: boundary edges and constrained interior edges (labelled
-// facets: cuts, region interfaces) are never flipped, split, collapsed or moved off.
+// facets: cuts, region interfaces) are never flipped, split, collapsed or moved off -- vertex
+// for vertex by default, only geometrically (on the input segments) with `input_segments`.
 #pragma once
 
 #include <array>
@@ -48,6 +49,11 @@ struct ImprovementOptions2 {
   /// their boundary neighbours (LocalModificationOptions2::coarsen_straight_boundary). Off: the
   /// boundary trace is kept vertex for vertex.
   bool coarsen_straight_boundary = false;
+  /// Empty (default): the boundary trace is kept vertex for vertex. Given (e.g.
+  /// input_segments_of(domain)): the trace is kept geometrically -- boundary Steiner vertices
+  /// slide along their input segment in node shifts and may be collapsed along it, and boundary
+  /// edges are split on it when no boundary_projection is given (LocalModificationOptions2).
+  topology::InputSegments2 input_segments;
 };
 
 struct ImprovementStats2 {
