@@ -27,6 +27,12 @@ When the last rounding of the bound's computation can underflow at the lower gua
 absolute 2^-1075 instead of a factor 1 - 2^-53, and the constant must be the double above
 (E + 2^-1074 / lower_guard^degree) / (1 - 2^-53)^r (proofs/README.md, section 9); the
 earlier roundings must stay normal.
+The orient2d filter has Ozaki et al.'s shape (proofs/gappa/orient2d_ozaki.g, README section
+10) and its own check (check_ozaki): orient2d_theta and orient2d_underflow_bound equal the
+script's @theta and @underflow_bound, which are the literals its computation uses; theta is
+the double above (1/(1 - u)^3 - 1)(1 + u)/(1 - u)^3; the model's hypotheses are the standard
+ones (|d| <= 2^-53, |eta| <= 2^-1075, dl, dr over all finite non-negative doubles) and the
+theorem is that the exact determinant is positive.
 Exact rational arithmetic throughout.  Usage: check_constants.py <filter_constants.h> <gappa dir>
 """
 import os
@@ -34,7 +40,8 @@ import re
 import sys
 from fractions import Fraction
 
-PREDICATES = ["orient2d", "orient3d", "incircle", "insphere"]
+PREDICATES = ["orient3d", "incircle", "insphere"]
+OZAKI = "orient2d_ozaki"  # the orient2d filter: its own shape, checked by check_ozaki
 STAGE2 = ["orient2d_stage2", "orient3d_stage2"]
 U = Fraction(1, 2 ** 53)
 TWO = Fraction(2)
@@ -138,17 +145,63 @@ def check_model(g, lower, upper):
             fail(f"{g.name}.g: computed quantity {c} has no @range goal (overflow unchecked)")
 
 
+def check_ozaki(path, consts):
+    text = open(path).read()
+    meta = dict(re.findall(r"^#\s*@(\w+)\s+(\S+)\s*$", text, re.M))
+    theta, under = parse_num(meta.get("theta", "0")), parse_num(meta.get("underflow_bound", "0"))
+    if meta.get("predicate") != OZAKI:
+        fail(f"{OZAKI}.g: @predicate is {meta.get('predicate')}")
+    for key, want in (("orient2d_theta", theta), ("orient2d_underflow_bound", under)):
+        if key not in consts:
+            fail(f"filter_constants.h: {key} missing")
+        elif consts[key][1] != want:
+            fail(f"filter_constants.h: {key} = {consts[key][0]} but its proof gives "
+                 f"{float(want).hex()} ({float(want)!r})")
+    rule = round_up_double((1 / (1 - U) ** 3 - 1) * (1 + U) / (1 - U) ** 3)
+    if theta != rule:
+        fail(f"{OZAKI}.g: @theta {float(theta).hex()} is not the derived {float(rule).hex()}")
+    body = "\n".join(l.split("#")[0] for l in text.splitlines())
+    # The computation must use exactly these constants (the hint repeats them).
+    m_t = re.search(r"^t\s*=\s*(\S+)\s*\*\s*s\s*\*\s*\(1 \+ d_t\)\s*\+\s*eta_t;", body, re.M)
+    m_b = re.search(r"^bound\s*=\s*\(t\s*\+\s*(\S+)\)\s*\*\s*\(1 \+ d_bound\);", body, re.M)
+    if not m_t or parse_num(m_t.group(1)) != theta:
+        fail(f"{OZAKI}.g: the computation of t does not use @theta")
+    if not m_b or parse_num(m_b.group(1)) != under:
+        fail(f"{OZAKI}.g: the computation of bound does not use @underflow_bound")
+    props = body[body.index("{") + 1:body.index("}")]
+    hyps, goal = props.split("->")
+    for m in re.finditer(r"\|(\w+)\|\s*<=\s*(\S+)", hyps):
+        name, v = m.group(1), parse_num(m.group(2))
+        want = U if name.startswith("d_") else TWO ** -1075 if name.startswith("eta_") else None
+        if v != want:
+            fail(f"{OZAKI}.g: |{name}| <= {m.group(2)} is not the standard model")
+    for var in ("dl", "dr"):
+        if not re.search(rf"\b{var} in \[0, 0x1p1024\]", hyps):
+            fail(f"{OZAKI}.g: {var} must range over all finite non-negative doubles")
+    if not re.search(r"\bdet - bound >= 0\b", hyps):
+        fail(f"{OZAKI}.g: the certification hypothesis must be det - bound >= 0")
+    m_g = re.fullmatch(r"\s*Det\s*>=\s*(\S+)\s*", goal)
+    if not m_g or parse_num(m_g.group(1)) <= 0:
+        fail(f"{OZAKI}.g: the theorem must be Det >= (a positive number)")
+    print(f"orient2d (Ozaki): theta = {float(theta).hex()} = {float(theta)!r}, "
+          f"underflow_bound = {float(under).hex()}")
+
+
 def main():
     header, gdir = sys.argv[1], sys.argv[2]
     consts = read_header(header)
     files = {}
     for fn in sorted(os.listdir(gdir)):
-        if fn.endswith(".g"):
+        if fn.endswith(".g") and fn != OZAKI + ".g":
             files[fn[:-2]] = GFile(os.path.join(gdir, fn))
     exports = {}
     for g in files.values():
         for e, v, t in g.tagged(g.goals, "export"):
             exports[t.split()[1]] = (e, v)
+    if os.path.exists(os.path.join(gdir, OZAKI + ".g")):
+        check_ozaki(os.path.join(gdir, OZAKI + ".g"), consts)
+    else:
+        fail(f"missing proof proofs/gappa/{OZAKI}.g")
     for p in PREDICATES + STAGE2:
         if p not in files:
             fail(f"missing proof proofs/gappa/{p}.g")

@@ -1,9 +1,10 @@
 // The constants of the semi-static filters, each proven by a Gappa script in proofs/gappa/.
 //
-// Every filter has the same shape (proofs/README.md gives the derivation):
+// The orient3d, incircle and insphere filters have the same shape (proofs/README.md gives
+// the derivation; orient2d has Ozaki et al.'s shape, below):
 //   1. the coordinate differences are rounded once each;
 //   2. the determinant is evaluated in double in a fixed order, no FMA;
-//   3. per axis, the largest rounded |difference| is taken (orient2d, orient3d), or one
+//   3. per axis, the largest rounded |difference| is taken (orient3d), or one
 //      largest over all axes (incircle, insphere, whose lifted column mixes the axes);
 //   4. if those maxima lie inside [lower_guard, upper_guard] the computed determinant has
 //      the exact sign whenever |det| > error_bound * (product of maxima, one per degree),
@@ -24,9 +25,15 @@
 
 namespace certimesh::predicates::filter_constants {
 
-// orient2d: |det| > bound * maxx * maxy, maxx, maxy in [lower, upper].
-// proofs/gappa/orient2d.g: E = 0x1.0000000000002p-50 (about 8.0 * 2^-53).
-inline constexpr double orient2d_error_bound = 0x1.0000000000004p-50;  // 8.8817841970012602e-16
+// orient2d (Ozaki et al.'s filter, its own shape): with dl = fl(acx * bcy),
+// dr = fl(acy * bcx) and det = fl(dl - dr), the sign of det is exact when
+// |det| > fl(fl(theta * |fl(dl + dr)|) + underflow_bound). No guards: an overflow makes
+// the comparison false. proofs/gappa/orient2d_ozaki.g proves it for these two values;
+// theta is (1/(1 - 2^-53)^3 - 1) (1 + 2^-53) / (1 - 2^-53)^3 rounded up (3u + 20u^2),
+// proofs/README.md section 10.
+inline constexpr double orient2d_theta = 0x1.8000000000005p-52;  // 3.330669073875472e-16
+inline constexpr double orient2d_underflow_bound = 0x1p-1073;
+// The guards of the orient2d second stage (below), in the form of the other filters'.
 inline constexpr double orient2d_lower_guard = 0x1p-480;
 inline constexpr double orient2d_upper_guard = 0x1p+500;
 

@@ -25,16 +25,19 @@ inline FilteredSign certify(bool in_range, double det, double error_bound) noexc
   return static_cast<FilteredSign>(s * static_cast<int>(in_range));
 }
 
+// Ozaki, Buenger, Ogita, Oishi and Rump's filter (BIT 56, 2016): the bound is relative to
+// |dl + dr|, which needs no per-axis maxima. When dl and dr have opposite signs there is no
+// cancellation and any bound is sound; when they have the same sign |dl + dr| = |dl| + |dr|
+// bounds the rounding errors (proofs/gappa/orient2d_ozaki.g, proofs/README.md section 10).
+// The additive underflow bound covers the absolute error of products that underflow; an
+// overflow leaves an infinity or NaN in det or in the bound, and every comparison false.
 inline FilteredSign orient2d_filter(const Point2& a, const Point2& b, const Point2& c) noexcept {
   namespace k = filter_constants;
-  const double acx = a.x - c.x, bcx = b.x - c.x;
-  const double acy = a.y - c.y, bcy = b.y - c.y;
-  const double det = acx * bcy - acy * bcx;
-  const double maxx = std::max(std::fabs(acx), std::fabs(bcx));
-  const double maxy = std::max(std::fabs(acy), std::fabs(bcy));
-  const double lo = std::min(maxx, maxy), hi = std::max(maxx, maxy);
-  const bool in_range = (lo >= k::orient2d_lower_guard) & (hi <= k::orient2d_upper_guard);
-  return certify(in_range, det, k::orient2d_error_bound * maxx * maxy);
+  const double dl = (a.x - c.x) * (b.y - c.y);
+  const double dr = (a.y - c.y) * (b.x - c.x);
+  const double det = dl - dr;
+  const double bound = k::orient2d_theta * std::fabs(dl + dr) + k::orient2d_underflow_bound;
+  return certify(true, det, bound);
 }
 
 inline FilteredSign orient3d_filter(const Point3& a, const Point3& b, const Point3& c,
