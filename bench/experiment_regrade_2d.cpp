@@ -18,7 +18,7 @@
 // edges split onto the segment nearest the midpoint).
 //
 //   experiment_regrade_2d [--h 0.033] [--max-operations N] [--target Q0] [--basket-size N2]
-//                         [--baskets N3] [--hole-segments N] [--trace-vertex-for-vertex]
+//                         [--baskets N3] [--hole-segments N] [--min-shift-gain G] [--trace-vertex-for-vertex]
 //                         [--coarsen-straight-boundary]
 #include <algorithm>
 #include <chrono>
@@ -55,6 +55,7 @@ struct Arguments {
   bool coarsen_straight_boundary = false;
   bool trace_vertex_for_vertex = false;
   std::size_t hole_segments = 16;
+  double minimum_shift_gain = 1e-3;  // ImprovementOptions2's default
 };
 
 Arguments parse(int argc, char** argv) {
@@ -75,6 +76,7 @@ Arguments parse(int argc, char** argv) {
     else if (key == "--target") a.target = std::atof(argv[i + 1]);
     else if (key == "--basket-size") a.basket_size = static_cast<std::uint32_t>(std::atoi(argv[i + 1]));
     else if (key == "--baskets") a.baskets = static_cast<std::uint32_t>(std::atoi(argv[i + 1]));
+    else if (key == "--min-shift-gain") a.minimum_shift_gain = std::atof(argv[i + 1]);
     else if (key == "--hole-segments") a.hole_segments = std::strtoull(argv[i + 1], nullptr, 10);
     else {
       std::fprintf(stderr, "error: unknown option %s\n", key.c_str());
@@ -134,7 +136,12 @@ topo::BoundaryProjection2 projection_onto(const gen::PlanarDomain& domain, const
 }
 
 // Where the worst element is, and whether its vertices are on the trace: what caps the result.
-void print_worst(const topo::TriangleMesh2& mesh, const gen::ImprovementOptions2& options) {
+void print_worst(const topo::TriangleMesh2& mesh, const gen::ImprovementOptions2& options,
+                 const gen::PlanarDomain& domain) {
+  const auto is_domain_vertex = [&domain](const topo::Point2d& p) {
+    return std::any_of(domain.points.begin(), domain.points.end(),
+                       [&p](const Point2& q) { return q.x == p[0] && q.y == p[1]; });
+  };
   double worst = 2.0;
   topo::ElementId at{};
   for (std::uint32_t s = 0; s < mesh.element_slot_count(); ++s) {
@@ -149,8 +156,9 @@ void print_worst(const topo::TriangleMesh2& mesh, const gen::ImprovementOptions2
   const auto v = mesh.vertices(at);
   std::printf("  worst element:");
   for (const auto x : v)
-    std::printf(" (%.4f, %.4f)%s", mesh.point(x)[0], mesh.point(x)[1], topo::is_trace_vertex(mesh, x) ? "T" : "");
-  std::printf("  (T: on the boundary trace)\n");
+    std::printf(" (%.4f, %.4f)%s", mesh.point(x)[0], mesh.point(x)[1],
+                is_domain_vertex(mesh.point(x)) ? "D" : topo::is_trace_vertex(mesh, x) ? "T" : "");
+  std::printf("  (D: a domain vertex, fixed; T: another vertex on the boundary trace)\n");
 }
 
 struct OperationSet {
@@ -215,6 +223,7 @@ int main(int argc, char** argv) {
     options.basket_size = args.basket_size;
     options.max_baskets = args.baskets;
     options.coarsen_straight_boundary = args.coarsen_straight_boundary;
+    options.minimum_shift_gain = args.minimum_shift_gain;
     options.max_operations = args.max_operations > 0 ? args.max_operations : 100 * start.stats.triangles;
     options.size.size_function = [scale](const Point2& p) { return scale * distance_to_holes(p); };
     if (args.trace_vertex_for_vertex) options.boundary_projection = projection_onto(domain, mesh);
@@ -235,7 +244,7 @@ int main(int argc, char** argv) {
     if (&set == &sets[0])
       std::printf("%-30s %9s %8.4f %8.4f %9zu  (the start mesh, graded size-aware quality)\n", "start", "-",
                   stats.initial_worst, stats.initial_mean, start.stats.triangles);
-    print_worst(mesh, options);
+    print_worst(mesh, options, domain);
     if (!report.valid) std::printf("  certificate: %s\n", report.finding.message.c_str());
   }
   return all_valid ? 0 : 1;

@@ -171,6 +171,27 @@ TEST(imp_BoundarySliding, DomainVertexAndSegmentQueriesAreExact) {
   }
 }
 
+// A mesh edge that is a whole input segment (both ends domain vertices) is split on it too.
+TEST(imp_BoundarySliding, InsertSplitsAWholeSegmentEdgeOnTheSegment) {
+  const PlanarDomain domain = slanted_quadrilateral();
+  const io::MeshData domain_data = generators::to_mesh_data(domain);
+  TriangleMesh2 mesh = start_mesh(domain, 10.0);  // no Steiner points: two triangles
+  ASSERT_EQ(boundary_vertices(mesh).size(), 4u);
+  const auto options = options_with(domain, [](const Point2d& a, const Point2d& b, const Point2d& c) {
+    return 1.0 / (std::hypot(b[0] - a[0], b[1] - a[1]) + std::hypot(c[0] - b[0], c[1] - b[1]) +
+                  std::hypot(a[0] - c[0], a[1] - c[1]));  // prefers small triangles
+  });
+  int split = 0;
+  for (std::uint32_t s = 0; s < mesh.element_slot_count(); ++s)
+    for (int i = 0; i < 3; ++i)
+      if (mesh.is_live(topology::ElementId{s}) && mesh.neighbour(topology::ElementId{s}, i) == topology::no_element)
+        split += topology::try_insert_on_edge(mesh, topology::ElementId{s}, i, options).has_value();
+  EXPECT_GE(split, 2);
+  EXPECT_EQ(boundary_vertices(mesh).size(), 4u + static_cast<std::size_t>(split));
+  const auto report = imp_testing::certify(mesh, &domain_data);
+  EXPECT_TRUE(report.valid) << report.finding.message;
+}
+
 // Algorithm 35 with a size that is coarse on the left and fine on the right: boundary vertices
 // go on the left (collapse along the segments) and come on the right (insert on boundary edges).
 TEST(imp_BoundarySliding, Algorithm35CollapsesAndInsertsAlongSegmentsCertifiedAndDeterministic) {

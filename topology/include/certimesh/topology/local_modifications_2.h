@@ -61,7 +61,9 @@ struct InputSegments2 {
   /// of it, decided exactly: the segment meets p's rounding box), or std::nullopt when p is a
   /// domain vertex, on no segment, or not provably on a single one -- such a vertex stays fixed.
   std::function<std::optional<InputSegment2>(const Point2d& p)> segment_containing;
-  /// The round-to-nearest image of the exact point start + f·(end − start), f in [0, 1].
+  /// The round-to-nearest image of the exact point start + f·(end − start), f in [0, 1]. Also
+  /// called with a constrained edge between two vertices that are on no segment's interior,
+  /// to ask (through segment_containing) whether the edge spans a whole input segment.
   std::function<Point2d(const InputSegment2& segment, double f)> point_on;
   explicit operator bool() const { return segment_containing && point_on; }
 };
