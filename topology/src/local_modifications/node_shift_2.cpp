@@ -7,6 +7,8 @@
 // minimum over the star is quasi-concave too and a golden-section search finds its maximum;
 // with the size-aware quality it is a good heuristic. Every trial point is checked exactly:
 // all star triangles strictly counterclockwise (the kernel of the star, digest D §2.1).
+// A boundary Steiner vertex, given the input segments, slides along its segment instead
+// (boundary_slide_2.cpp); every other trace vertex stays.
 #include <algorithm>
 #include <cmath>
 #include <limits>
