@@ -11,8 +11,9 @@
 // dl = acx*bcy, dr = acy*bcx, det = dl - dr, certain when |det| > theta*|dl + dr| +
 // DBL_MIN. No maxima, no guards: overflow gives inf/NaN and every comparison false
 // (uncertain); the DBL_MIN term is a deliberately generous allowance for underflow in
-// the two products. theta is the JTS/GEOS literal (3u rounded up). Adopting it in the
-// kernel would need its own Gappa proof, like every other constant there.
+// the two products. theta is the JTS/GEOS literal (3u rounded up). Since ea3e953 the
+// kernel's own orient2d filter has this shape with its proven constants (theta = 3u +
+// 20u^2, 2^-1073; proofs/README.md section 10): this prototype stays as a reference.
 //
 // BM_orient2d_prototype_fastexact: the Ozaki-style filter, then -- when every coordinate
 // difference is exact and its magnitude 0 or within [2^-480, 2^500] -- the exact sign of

@@ -27,6 +27,10 @@ When the last rounding of the bound's computation can underflow at the lower gua
 absolute 2^-1075 instead of a factor 1 - 2^-53, and the constant must be the double above
 (E + 2^-1074 / lower_guard^degree) / (1 - 2^-53)^r (proofs/README.md, section 9); the
 earlier roundings must stay normal.
+The compensated stage of orient3d (proofs/gappa/orient3d_compensated.g, README section 11)
+is checked like a second stage, with r = @bound_roundings + @estimate_roundings: its
+certification compares the rounded estimate fl(y + lo), whose relative rounding costs one
+more factor (1 - 2^-53).
 The orient2d filter has Ozaki et al.'s shape (proofs/gappa/orient2d_ozaki.g, README section
 10) and its own check (check_ozaki): orient2d_theta and orient2d_underflow_bound equal the
 script's @theta and @underflow_bound, which are the literals its computation uses; theta is
@@ -43,6 +47,9 @@ from fractions import Fraction
 PREDICATES = ["orient3d", "incircle", "insphere"]
 OZAKI = "orient2d_ozaki"  # the orient2d filter: its own shape, checked by check_ozaki
 STAGE2 = ["orient2d_stage2", "orient3d_stage2"]
+# Stages whose certification compares a rounded estimate: its relative rounding adds
+# @estimate_roundings factors (1 - 2^-53) to the rule (README section 11).
+COMPENSATED = ["orient3d_compensated"]
 U = Fraction(1, 2 ** 53)
 TWO = Fraction(2)
 errors = []
@@ -202,7 +209,7 @@ def main():
         check_ozaki(os.path.join(gdir, OZAKI + ".g"), consts)
     else:
         fail(f"missing proof proofs/gappa/{OZAKI}.g")
-    for p in PREDICATES + STAGE2:
+    for p in PREDICATES + STAGE2 + COMPENSATED:
         if p not in files:
             fail(f"missing proof proofs/gappa/{p}.g")
             continue
@@ -213,13 +220,17 @@ def main():
         guards = g.meta.get("guards", p)
         if p in STAGE2 and (constant != f"{p}_bound" or guards + "_stage2" != p):
             fail(f"{p}.g: @constant {constant} / @guards {guards} do not name {p}_bound / its filter")
+        if p in COMPENSATED and (constant != f"{p}_bound" or not p.startswith(guards + "_")):
+            fail(f"{p}.g: @constant {constant} / @guards {guards} do not name {p}_bound / its filter")
         lemmas = [f for f in files.values() if f.meta.get("lemma_of") == p]
         E = [v for e, v, t in g.tagged(g.goals, "E")]
         if len(E) != 1:
             fail(f"{p}.g: needs exactly one @E goal")
             continue
         E = E[0]
-        r = int(g.meta["bound_roundings"])
+        r = int(g.meta["bound_roundings"]) + int(g.meta.get("estimate_roundings", "0"))
+        if p in COMPENSATED and g.meta.get("estimate_roundings") != "1":
+            fail(f"{p}.g: the estimate fl(y + lo) is one more rounding: @estimate_roundings 1")
         deg = int(g.meta["degree"])
         L, Up = g.lower, g.upper
         code = round_up_double(E / (1 - U) ** r)

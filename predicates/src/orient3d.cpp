@@ -44,19 +44,78 @@ double first_order_correction(const std::array<double, 9>& h, const std::array<d
          ((t[6] * ccx + t[7] * ccy) + t[8] * ccz);
 }
 
+// A cofactor u1*v2 - u2*v1 of h: m = fl(fl(u1*v2) - fl(u2*v1)), the value the correction
+// uses, and lo = fl(me + fl(pe - qe)) from its error-free tails (two_product, two_diff).
+struct Cofactor {
+  double m, lo;
+};
+
+Cofactor cofactor(double u1, double v2, double u2, double v1) {
+  double p, pe, q, qe, m, me;
+  two_product(u1, v2, p, pe);
+  two_product(u2, v1, q, qe);
+  two_diff(p, q, m, me);
+  return {m, me + (pe - qe)};
+}
+
+// The compensated stage: det(h) in double-double along the x column (cofactors with their
+// tails, each term h * m split by two_product, the three terms added by two_sum), the
+// tails and the first-order correction gathered in lo, and est = fl(y + lo). Its distance
+// to the true determinant is at most E3 * maxx * maxy * maxz + 2^-53 |est|, which
+// |est| > orient3d_compensated_bound * maxx * maxy * maxz covers
+// (proofs/gappa/orient3d_compensated.g, proofs/README.md section 11). Branch-free and
+// without expansions: on near-coplanar input it decides where the filter cannot. The
+// evaluation order is the one the proof models. Zero when it cannot decide.
+Sign compensated_stage(const std::array<double, 9>& h, double correction, double maxx,
+                       double maxy, double maxz) {
+  namespace k = filter_constants;
+  const Cofactor ca = cofactor(h[4], h[8], h[5], h[7]);  // bdy * cdz - bdz * cdy
+  const Cofactor cb = cofactor(h[7], h[2], h[8], h[1]);  // cdy * adz - cdz * ady
+  const Cofactor cc = cofactor(h[1], h[5], h[2], h[4]);  // ady * bdz - adz * bdy
+  double sa, sa_e, sb, sb_e, sc, sc_e;
+  two_product(h[0], ca.m, sa, sa_e);
+  two_product(h[3], cb.m, sb, sb_e);
+  two_product(h[6], cc.m, sc, sc_e);
+  const double lo_a = sa_e + h[0] * ca.lo;
+  const double lo_b = sb_e + h[3] * cb.lo;
+  const double lo_c = sc_e + h[6] * cc.lo;
+  double x, x_e, y, y_e;
+  two_sum(sa, sb, x, x_e);
+  two_sum(x, sc, y, y_e);
+  const double lo = ((x_e + y_e) + ((lo_a + lo_b) + lo_c)) + correction;
+  const double est = y + lo;
+  const double bound = k::orient3d_compensated_bound * maxx * maxy * maxz;
+  return static_cast<Sign>(static_cast<int>(est > bound) - static_cast<int>(est < -bound));
+}
+
+// Per axis, the largest |h|; false unless they lie in the filter's guards and expansion
+// arithmetic is exact for h (which also makes every two_product tail of the compensated
+// stage exact: proofs/README.md section 11).
+bool stage_maxima(const std::array<double, 9>& h, double& maxx, double& maxy, double& maxz) {
+  namespace k = filter_constants;
+  maxx = std::max(std::max(std::fabs(h[0]), std::fabs(h[3])), std::fabs(h[6]));
+  maxy = std::max(std::max(std::fabs(h[1]), std::fabs(h[4])), std::fabs(h[7]));
+  maxz = std::max(std::max(std::fabs(h[2]), std::fabs(h[5])), std::fabs(h[8]));
+  const double lo = std::min(std::min(maxx, maxy), maxz);
+  const double hi = std::max(std::max(maxx, maxy), maxz);
+  return lo >= k::orient3d_lower_guard && hi <= k::orient3d_upper_guard && expansion_safe(h, 3);
+}
+
+// The compensated stage where its preconditions hold; zero otherwise or when undecided.
+Sign compensated_sign(const std::array<double, 9>& h, const std::array<double, 9>& t) {
+  double maxx, maxy, maxz;
+  if (!stage_maxima(h, maxx, maxy, maxz)) return Sign::zero;
+  return compensated_stage(h, first_order_correction(h, t), maxx, maxy, maxz);
+}
+
 // The second stage: exact det(h) plus the first-order tail correction; the neglected
 // remainder is at most E2 * maxx * maxy * maxz, which the computed bound
 // orient3d_stage2_bound * maxx * maxy * maxz covers (proofs/gappa/orient3d_stage2.g,
 // proofs/README.md section 9). Zero when it cannot decide.
 Sign second_stage(const std::array<double, 9>& h, const std::array<double, 9>& t) {
   namespace k = filter_constants;
-  const double maxx = std::max(std::max(std::fabs(h[0]), std::fabs(h[3])), std::fabs(h[6]));
-  const double maxy = std::max(std::max(std::fabs(h[1]), std::fabs(h[4])), std::fabs(h[7]));
-  const double maxz = std::max(std::max(std::fabs(h[2]), std::fabs(h[5])), std::fabs(h[8]));
-  const double lo = std::min(std::min(maxx, maxy), maxz);
-  const double hi = std::max(std::max(maxx, maxy), maxz);
-  if (!(lo >= k::orient3d_lower_guard && hi <= k::orient3d_upper_guard)) return Sign::zero;
-  if (!expansion_safe(h, 3)) return Sign::zero;
+  double maxx, maxy, maxz;
+  if (!stage_maxima(h, maxx, maxy, maxz)) return Sign::zero;
   const auto estimate = translated_orient3d(h) + expansion_of(first_order_correction(h, t));
   return sign_beyond(estimate, k::orient3d_stage2_bound * maxx * maxy * maxz);
 }
@@ -72,6 +131,9 @@ Sign orient3d_exact_stage(const Point3& a, const Point3& b, const Point3& c, con
     two_diff(raw[i], raw[9 + i % 3], diffs[i], tails[i]);
     exact_diffs = exact_diffs && tails[i] == 0.0;
   }
+  // Near-degenerate input mostly ends here, without expansions.
+  const Sign compensated = compensated_sign(diffs, tails);
+  if (compensated != Sign::zero) return compensated;
   // Exact differences (nearby points): the translated determinant is already exact.
   if (exact_diffs && expansion_safe(diffs, 3)) return translated_orient3d(diffs).sign();
   const Sign second = second_stage(diffs, tails);

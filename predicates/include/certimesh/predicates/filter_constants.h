@@ -70,5 +70,13 @@ inline constexpr double insphere_upper_guard = 0x1p+200;
 inline constexpr double orient2d_stage2_bound = 0x1.c0a0000000003p-103;  // 1.728040642601448e-31
 // orient3d: proofs/gappa/orient3d_stage2.g: E2 = 0x1.0812000000002p-99 (about 132.0 * 2^-106).
 inline constexpr double orient3d_stage2_bound = 0x1.0814000000004p-99;  // 1.627507099504435e-30
+// orient3d's compensated stage (orient3d.cpp, tried before the second stage): the pair
+// (y, lo), det(h) in double-double plus the tails and the correction, is within E3 *
+// (product of maxima) of the true determinant; the sign of est = fl(y + lo) is certified
+// when |est| > bound * maxx * maxy * maxz. bound is (E3 + the underflow charge) / (1 -
+// 2^-53)^4 rounded up: three roundings of the bound and the relative rounding of est
+// (proofs/README.md, section 11).
+// proofs/gappa/orient3d_compensated.g: E3 = 0x1.5906000000002p-97 (about 690 * 2^-106).
+inline constexpr double orient3d_compensated_bound = 0x1.5906800000005p-97;  // 8.505532561645966e-30
 
 }  // namespace certimesh::predicates::filter_constants
