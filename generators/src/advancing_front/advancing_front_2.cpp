@@ -1,7 +1,9 @@
-// Algorithm 10 (digest B §3.2): one outer step per triangle, the shortest front edge first.
+// Algorithm 10 (digest B §3.2): one outer step per triangle, the shortest front edge first --
+// among the input front's edges while any is left, then among the grown ones (kInputRank).
 //
 // Candidate order (the listing leaves it open, digest B §3.2 [CAVEAT]), in three groups:
-//   0. front vertices on the left of e12 within 0.8 s of the ideal apex v0, nearest first;
+//   0. front vertices on the left of e12 within 0.7 s of the ideal apex v0, nearest first,
+//      except a front neighbour of v1 or v2 across a corner wider than 82 degrees;
 //   1. v0 itself, when the h and r radii allow it;
 //   2. the other front vertices in the search box, best triangle shape first.
 // Why: a front vertex near v0 is where the front wants to close; inserting v0 beside it
@@ -9,10 +11,13 @@
 // triangle for a later step. Measured on the unit square (h = 0.005): ordering every
 // candidate by its shape with v0 in the same list gave a worst quality of 0.00-0.46 (an
 // early good triangle leaves slivers where fronts meet); these groups give 0.59-0.62 with a
-// mean of 0.998. Ties: the smaller vertex id. Ordering decides nothing about validity:
-// each candidate must still pass the sign tests.
+// mean of 0.998. With the boundary advanced first and bisector apexes at front corners
+// (corner_apex), 0.7 s does better than 0.8 s (a vertex at 0.73 s from v0 is the neighbour
+// row's apex near a corner: taking it squeezes the first layer). Ties: the smaller vertex
+// id. Ordering decides nothing about validity: each candidate must still pass the sign tests.
 //
-// Local search: Ω is the axis-aligned box of half-width R = 1.25 max(s, r) around v0 (a
+// Local search: Ω is the axis-aligned box of half-width R = 1.25 max(s, r, |v0 v1|, |v0 v2|)
+// around v0 (a
 // convex neighbourhood of v1, v2 and v0, as §3.3 needs; membership is decided by exact
 // coordinate comparisons, and the grid returns a superset of the edges meeting it). When
 // it finds nothing, the global retry repeats the step over the whole front with exact
@@ -37,7 +42,18 @@ using namespace advancing_front_detail;
 using predicates::IntersectionMode;
 
 constexpr double kSearchRadiusFactor = 1.25;  // R = 1.25 max(s, r): inside the book's (s, 2s]
-constexpr double kNearRadius = 0.8;  // group 0 of the candidate order, in units of s
+constexpr double kNearRadius = 0.7;  // group 0 of the candidate order, in units of s
+// Front corners split by a bisector apex (corner_apex): from the angle where one closing
+// triangle and two half-angle ones have equal quality (about 82 degrees) to where the
+// isosceles apex does as well (150).
+constexpr double kCosMinBisectedAngle = 0.13917310096006544;   // cos 82 degrees
+constexpr double kCosMaxBisectedAngle = -0.86602540378443865;  // cos 150 degrees
+// The input front (the boundary) is advanced first, its shortest edge first, then the rest
+// shortest first: the first layer then follows the boundary all along it, instead of being
+// squeezed where the layers grown from a neighbouring side arrive first (they left right
+// triangles against fixed boundary vertices that no later smoothing could repair).
+constexpr std::uint32_t kInputRank = 0;
+constexpr std::uint32_t kGrownRank = 1;
 constexpr std::size_t kMaxGridCells = std::size_t{1} << 21;  // about 50 MB of empty cells at most
 
 double squared_distance(const Point2& p, const Point2& q) {
@@ -104,7 +120,7 @@ class AdvancingFront {
     result_.triangles.reserve(reserve);
     front_.reserve(points.size() + reserve / 2, 2 * front.size() + 1024);  // slots are reused: the front, not the mesh
     grow_vertices();
-    for (const FrontEdge& e : front) insert_edge(e.a, e.b);
+    for (const FrontEdge& e : front) insert_edge(e.a, e.b, kInputRank);
   }
 
   AdvancingFrontResult run() {
@@ -160,8 +176,9 @@ class AdvancingFront {
     vertex_stamp_.resize(result_.points.size(), 0);
   }
 
-  void insert_edge(std::uint32_t a, std::uint32_t b) {
-    const std::uint32_t e = front_.insert(a, b, squared_distance(point(a), point(b)));
+  // `rank`: kInputRank for the input front, kGrownRank for the edges the front grows.
+  void insert_edge(std::uint32_t a, std::uint32_t b, std::uint32_t rank) {
+    const std::uint32_t e = front_.insert(a, b, rank, squared_distance(point(a), point(b)));
     grid_.insert(e, point(a), point(b));
     if (e >= edge_stamp_.size()) edge_stamp_.push_back(0);
   }
@@ -185,7 +202,42 @@ class AdvancingFront {
     const double height = 2.0 * st.size.h;  // hc
     st.apex = Point2{mid.x - (st.p2.y - st.p1.y) / l * height, mid.y + (st.p2.x - st.p1.x) / l * height};
     st.apex_id = static_cast<std::uint32_t>(result_.points.size());
+    corner_apex(st);
     return st;
+  }
+
+  // The only other front edge at v (out of v when `out`, else into v), or no_id when v has
+  // several (a pinch vertex).
+  std::uint32_t single_neighbour(std::uint32_t v, bool out) const {
+    const std::uint32_t e = out ? front_.first_out(v) : front_.first_in(v);
+    if (e == no_id) return no_id;
+    const Front2::Edge& edge = front_.edge(e);
+    if ((out ? edge.next_out : edge.next_in) != no_id) return no_id;
+    return out ? edge.b : edge.a;
+  }
+
+  // At a convex front corner of v2 (else v1) whose angle lies between kMinBisectedAngle and
+  // kMaxBisectedAngle, the ideal apex goes on the corner's bisector at distance s: the corner
+  // is split into two triangles of half its angle. At the right angle of a square's corner
+  // this gives two triangles of quality 0.96, where the isosceles apex gives an equilateral
+  // triangle and a 30-degree one beside it that the smoothing cannot repair (the corner is
+  // fixed). In the lattice of a uniform front (angles of 120 degrees) the bisector point is
+  // the isosceles apex itself. Geometry only steers: the apex still passes every test.
+  void corner_apex(Step& st) const {
+    const auto on_bisector = [&](const Point2& corner, const Point2& along, std::uint32_t other) {
+      if (other == no_id) return false;
+      const Point2& q = point(other);
+      if (orientation(st.p1, st.p2, q, false) <= 0) return false;  // not convex (or not certainly)
+      const double ux = along.x - corner.x, uy = along.y - corner.y, wx = q.x - corner.x, wy = q.y - corner.y;
+      const double lu = std::sqrt(ux * ux + uy * uy), lw = std::sqrt(wx * wx + wy * wy);
+      const double cosine = (ux * wx + uy * wy) / (lu * lw);
+      if (!(cosine <= kCosMinBisectedAngle && cosine >= kCosMaxBisectedAngle)) return false;
+      const double bx = ux / lu + wx / lw, by = uy / lu + wy / lw, lb = std::sqrt(bx * bx + by * by);
+      st.apex = Point2{corner.x + st.size.s * bx / lb, corner.y + st.size.s * by / lb};
+      return true;
+    };
+    if (on_bisector(st.p2, st.p1, single_neighbour(st.v2, true))) return;
+    on_bisector(st.p1, st.p2, single_neighbour(st.v1, false));
   }
 
   bool advance(std::uint32_t e) {
@@ -199,7 +251,10 @@ class AdvancingFront {
   // Gathers the local front (every edge of the whole front when global) and the front
   // vertices in the box, deduplicated by stamps.
   bool gather(const Step& st, bool global, Box2& box) {
-    const double radius = kSearchRadiusFactor * std::max(st.size.s, st.size.r);
+    // A corner apex (corner_apex) may stand farther than s from v1 or v2: the box grows to
+    // keep both inside.
+    const double reach = std::sqrt(std::max(squared_distance(st.apex, st.p1), squared_distance(st.apex, st.p2)));
+    const double radius = kSearchRadiusFactor * std::max({st.size.s, st.size.r, reach});
     box = Box2{st.apex.x - radius, st.apex.y - radius, st.apex.x + radius, st.apex.y + radius};
     if (!global && !(box.contains(st.p1) && box.contains(st.p2))) return false;
     ++stamp_;
@@ -240,13 +295,25 @@ class AdvancingFront {
     return orientation(st.p1, st.p2, st.apex, exact) > 0;
   }
 
+  // Whether v is a front neighbour of v1 or v2 at a front angle too wide to close with one
+  // triangle (above kMinBisectedAngle): closing a right angle makes a triangle of quality
+  // 0.89 at best, the bisector apex two of 0.96 (corner_apex).
+  bool wide_corner(const Step& st, std::uint32_t v) const {
+    const auto cos_at = [&](const Point2& o, const Point2& p, const Point2& q) {
+      const double ux = p.x - o.x, uy = p.y - o.y, wx = q.x - o.x, wy = q.y - o.y;
+      return (ux * wx + uy * wy) / std::sqrt((ux * ux + uy * uy) * (wx * wx + wy * wy));
+    };
+    if (front_.find(st.v2, v) != no_id && cos_at(st.p2, st.p1, point(v)) < kCosMinBisectedAngle) return true;
+    return front_.find(v, st.v1) != no_id && cos_at(st.p1, st.p2, point(v)) < kCosMinBisectedAngle;
+  }
+
   void collect_candidates(const Step& st, bool exact) {
     candidates_.clear();
     const double near2 = kNearRadius * kNearRadius * st.size.s * st.size.s;
     for (const std::uint32_t v : nearby_) {
       if (v == st.v1 || v == st.v2 || orientation(st.p1, st.p2, point(v), exact) <= 0) continue;
       const double d2 = squared_distance(point(v), st.apex);
-      if (d2 < near2)
+      if (d2 < near2 && !wide_corner(st, v))
         candidates_.push_back(Candidate{v, 0, -d2});
       else
         candidates_.push_back(Candidate{v, 2, shape_quality(st.p1, st.p2, point(v))});
@@ -304,7 +371,7 @@ class AdvancingFront {
     if (e != no_id)
       erase_edge(e);
     else
-      insert_edge(b, a);
+      insert_edge(b, a, kGrownRank);
   }
 
   AdvancingFrontResult finish() {

@@ -6,7 +6,8 @@
 //   - per vertex, the list of its outgoing edges (an intrusive singly linked list): this is
 //     the (a, b) -> edge map of the front update rule, and tells whether a vertex is still a
 //     front vertex (a closed front has out-degree = in-degree >= 1 at each of its vertices);
-//   - a binary min-heap on (squared length, a, b) with lazy deletion (an entry is stale when
+//     and the list of its incoming edges, so that both front neighbours of an edge are known;
+//   - a binary min-heap on (rank, squared length, a, b) with lazy deletion (an entry is stale when
 //     its slot is dead or holds another edge), so the shortest edge is found in O(log n) and
 //     ties are broken by vertex ids, never by memory layout.
 #pragma once
@@ -25,6 +26,7 @@ class Front2 {
   struct Edge {
     std::uint32_t a = 0, b = 0;
     std::uint32_t next_out = no_id;  // next outgoing edge of `a`
+    std::uint32_t next_in = no_id;   // next incoming edge of `b`
     bool alive = false;
   };
 
@@ -32,35 +34,40 @@ class Front2 {
   /// Makes room for vertex ids below `count`.
   void grow_vertices(std::size_t count);
 
-  /// Adds a -> b; `length2` is its squared length (the heap key).
-  std::uint32_t insert(std::uint32_t a, std::uint32_t b, double length2);
+  /// Adds a -> b; (`rank`, `length2`) is its heap key: the least rank first, then the least
+  /// squared length.
+  std::uint32_t insert(std::uint32_t a, std::uint32_t b, std::uint32_t rank, double length2);
   void erase(std::uint32_t e);
   /// The live edge a -> b, or no_id.
   std::uint32_t find(std::uint32_t a, std::uint32_t b) const;
 
-  /// The shortest live edge (ties: smallest a, then b), or no_id when the front is empty.
+  /// The shortest live edge of the least rank (ties: smallest a, then b), or no_id when the
+  /// front is empty.
   std::uint32_t shortest();
 
   bool is_front_vertex(std::uint32_t v) const { return first_out_[v] != no_id; }
   std::uint32_t first_out(std::uint32_t v) const { return first_out_[v]; }
+  std::uint32_t first_in(std::uint32_t v) const { return first_in_[v]; }
   const Edge& edge(std::uint32_t e) const { return edges_[e]; }
   std::size_t slot_count() const { return edges_.size(); }
   std::size_t live_count() const { return live_; }
 
  private:
   struct HeapEntry {
+    std::uint32_t rank;
     double length2;
     std::uint32_t a, b, edge;
   };
-  // Heap order: the least (length2, a, b) on top.
+  // Heap order: the least (rank, length2, a, b) on top.
   static bool after(const HeapEntry& x, const HeapEntry& y) {
+    if (x.rank != y.rank) return x.rank > y.rank;
     if (x.length2 != y.length2) return x.length2 > y.length2;
     if (x.a != y.a) return x.a > y.a;
     return x.b > y.b;
   }
 
   std::vector<Edge> edges_;
-  std::vector<std::uint32_t> first_out_;
+  std::vector<std::uint32_t> first_out_, first_in_;
   std::vector<HeapEntry> heap_;
   std::vector<std::uint32_t> free_slots_;
   std::size_t live_ = 0;

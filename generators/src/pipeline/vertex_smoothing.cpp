@@ -64,6 +64,40 @@ Point2 ideal_position(const TriangleSoup& m, std::span<const std::uint32_t> star
   return {x / n, y / n};
 }
 
+// The mean of the link vertices (Laplacian smoothing's target).
+Point2 link_centroid(const TriangleSoup& m, std::span<const std::uint32_t> star, std::uint32_t v) {
+  double x = 0.0, y = 0.0;
+  for (const std::uint32_t t : star) {
+    const auto [a, b] = link_edge(m.triangles[t], v);
+    x += m.points[a].x + m.points[b].x;
+    y += m.points[a].y + m.points[b].y;
+  }
+  const double n = 2.0 * static_cast<double>(star.size());
+  return {x / n, y / n};
+}
+
+// The best of a few points on the way to the ideal point and to the link's centroid (full,
+// half and quarter steps) by the star's worst quality, or v's own place when none strictly
+// improves on `before`. The centroid serves where the ideal points of the link edges
+// disagree (a vertex of degree 5 or 7), the short steps where the full one overshoots.
+Point2 best_position(const TriangleSoup& m, std::span<const std::uint32_t> star, std::uint32_t v, double before) {
+  const Point2 here = m.points[v];
+  double best = before;
+  Point2 chosen = here;
+  for (const Point2& goal : {ideal_position(m, star, v), link_centroid(m, star, v)}) {
+    for (const double step : {1.0, 0.5, 0.25}) {
+      const Point2 p{here.x + step * (goal.x - here.x), here.y + step * (goal.y - here.y)};
+      if (!std::isfinite(p.x) || !std::isfinite(p.y)) continue;
+      const double q = star_quality(m, star, v, p);
+      if (q > best) {
+        best = q;
+        chosen = p;
+      }
+    }
+  }
+  return chosen;
+}
+
 std::vector<std::uint8_t> poor_vertices(const TriangleSoup& m, const VertexStars& stars, double target) {
   std::vector<std::uint8_t> poor(m.points.size(), 0);
   for (const auto& t : m.triangles) {
@@ -93,16 +127,10 @@ SmoothingStats smooth_poor_regions(TriangleSoup& m, std::span<const DomainSegmen
       ++stats.candidates;
       const auto star = stars.of(v);
       const double before = star_quality(m, star, v, m.points[v]);
-      const Point2 ideal = ideal_position(m, star, v);
-      // The ideal point, else halfway to it: the first that strictly improves the star.
-      for (const double step : {1.0, 0.5}) {
-        const Point2 p{m.points[v].x + step * (ideal.x - m.points[v].x), m.points[v].y + step * (ideal.y - m.points[v].y)};
-        if (!std::isfinite(p.x) || !std::isfinite(p.y)) break;
-        if (star_quality(m, star, v, p) > before) {
-          m.points[v] = p;
-          ++stats.moved;
-          break;
-        }
+      const Point2 moved = best_position(m, star, v, before);
+      if (moved != m.points[v]) {
+        m.points[v] = moved;
+        ++stats.moved;
       }
     }
   }

@@ -1,6 +1,7 @@
 // Ideal-point smoothing of the vertices around poor triangles: each free vertex moves toward
 // the mean of the apexes of the equilateral triangles standing on the far edges of its star,
-// and the move is kept only when every triangle of the star stays positively oriented (exact
+// or toward the centroid of its link (whichever of a few steps is best), and the move is kept
+// only when every triangle of the star stays positively oriented (exact
 // orient2d) and the star's worst quality strictly rises -- so no move can tangle the mesh or
 // lower its quality. Flat arrays, a few sweeps: cheap enough to run before Algorithm 35,
 // which then has far fewer poor triangles to work on.

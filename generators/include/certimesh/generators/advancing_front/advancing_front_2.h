@@ -2,7 +2,9 @@
 //
 // Input: points and a closed front F(P) of directed edges with the unmeshed region on their
 // left (outer sides counterclockwise, both directions of every internal cut). Each step takes
-// the shortest front edge, builds the ideal apex from the size policy, gathers candidate
+// the shortest front edge (the input front's edges before the grown ones, so that the first
+// layer follows the boundary), builds the ideal apex from the size policy (on the bisector at
+// a front corner of 82 to 150 degrees), gathers candidate
 // front vertices from a local search structure, applies the h and r exclusion radii, and
 // accepts the first candidate whose triangle is positively oriented and meets no front edge
 // (triangle-segment tests that may err only towards "intersect"); when the local search
