@@ -216,28 +216,35 @@ class AdvancingFront {
     return out ? edge.b : edge.a;
   }
 
-  // At a convex front corner of v2 (else v1) whose angle lies between kMinBisectedAngle and
-  // kMaxBisectedAngle, the ideal apex goes on the corner's bisector at distance s: the corner
-  // is split into two triangles of half its angle. At the right angle of a square's corner
-  // this gives two triangles of quality 0.96, where the isosceles apex gives an equilateral
-  // triangle and a 30-degree one beside it that the smoothing cannot repair (the corner is
-  // fixed). In the lattice of a uniform front (angles of 120 degrees) the bisector point is
-  // the isosceles apex itself. Geometry only steers: the apex still passes every test.
+  // At a convex front corner of v1 or v2 whose angle lies between kMinBisectedAngle and
+  // kMaxBisectedAngle (the sharper one when both do), the ideal apex goes on the corner's
+  // bisector at distance s: the corner is split into two triangles of half its angle. At the
+  // right angle of a square's corner this gives two triangles of quality 0.96, where the
+  // isosceles apex gives an equilateral triangle and a 30-degree one beside it that the
+  // smoothing cannot repair (the corner is fixed). In the lattice of a uniform front (angles
+  // of 120 degrees) the bisector point is the isosceles apex itself. Geometry only steers:
+  // the apex still passes every test.
   void corner_apex(Step& st) const {
-    const auto on_bisector = [&](const Point2& corner, const Point2& along, std::uint32_t other) {
-      if (other == no_id) return false;
+    struct Corner {
+      double cosine = -2.0;  // below every angle's: no corner
+      Point2 apex;
+    };
+    const auto corner_at = [&](const Point2& corner, const Point2& along, std::uint32_t other) {
+      Corner c;
+      if (other == no_id) return c;
       const Point2& q = point(other);
-      if (orientation(st.p1, st.p2, q, false) <= 0) return false;  // not convex (or not certainly)
+      if (orientation(st.p1, st.p2, q, false) <= 0) return c;  // not convex (or not certainly)
       const double ux = along.x - corner.x, uy = along.y - corner.y, wx = q.x - corner.x, wy = q.y - corner.y;
       const double lu = std::sqrt(ux * ux + uy * uy), lw = std::sqrt(wx * wx + wy * wy);
       const double cosine = (ux * wx + uy * wy) / (lu * lw);
-      if (!(cosine <= kCosMinBisectedAngle && cosine >= kCosMaxBisectedAngle)) return false;
+      if (!(cosine <= kCosMinBisectedAngle && cosine >= kCosMaxBisectedAngle)) return c;
       const double bx = ux / lu + wx / lw, by = uy / lu + wy / lw, lb = std::sqrt(bx * bx + by * by);
-      st.apex = Point2{corner.x + st.size.s * bx / lb, corner.y + st.size.s * by / lb};
-      return true;
+      return Corner{cosine, Point2{corner.x + st.size.s * bx / lb, corner.y + st.size.s * by / lb}};
     };
-    if (on_bisector(st.p2, st.p1, single_neighbour(st.v2, true))) return;
-    on_bisector(st.p1, st.p2, single_neighbour(st.v1, false));
+    const Corner at2 = corner_at(st.p2, st.p1, single_neighbour(st.v2, true));
+    const Corner at1 = corner_at(st.p1, st.p2, single_neighbour(st.v1, false));
+    const Corner& sharper = at1.cosine > at2.cosine ? at1 : at2;
+    if (sharper.cosine > -2.0) st.apex = sharper.apex;
   }
 
   bool advance(std::uint32_t e) {
