@@ -150,8 +150,9 @@ std::optional<LocalChange2> try_node_deletion(TriangleMesh2& mesh, VertexId v,
 /// Whether the edge opposite local vertex `local_edge` of `element` is constrained (see above).
 bool is_constrained_edge(const TriangleMesh2& mesh, ElementId element, int local_edge);
 
-/// Whether v may not move or be deleted: it lies on a constrained edge, or its star is not a
-/// single fan connected through edges (a pinched vertex).
+/// Whether v may not move freely or be deleted: it lies on a constrained edge, or its star is
+/// not a single fan connected through edges (a pinched vertex). With `input_segments` such a
+/// vertex may still slide along, or be collapsed along, its input segment (see above).
 bool is_trace_vertex(const TriangleMesh2& mesh, VertexId v);
 
 }  // namespace certimesh::topology
