@@ -27,8 +27,8 @@ When the last rounding of the bound's computation can underflow at the lower gua
 absolute 2^-1075 instead of a factor 1 - 2^-53, and the constant must be the double above
 (E + 2^-1074 / lower_guard^degree) / (1 - 2^-53)^r (proofs/README.md, section 9); the
 earlier roundings must stay normal.
-The compensated stage of orient3d (proofs/gappa/orient3d_compensated.g, README section 11)
-is checked like a second stage, with r = @bound_roundings + @estimate_roundings: its
+The compensated stages of orient3d and incircle (proofs/gappa/orient3d_compensated.g,
+incircle_compensated.g, README sections 11 and 12) are checked like a second stage, with r = @bound_roundings + @estimate_roundings: its
 certification compares the rounded estimate fl(y + lo), whose relative rounding costs one
 more factor (1 - 2^-53).
 The orient2d filter has Ozaki et al.'s shape (proofs/gappa/orient2d_ozaki.g, README section
@@ -49,7 +49,7 @@ OZAKI = "orient2d_ozaki"  # the orient2d filter: its own shape, checked by check
 STAGE2 = ["orient2d_stage2", "orient3d_stage2"]
 # Stages whose certification compares a rounded estimate: its relative rounding adds
 # @estimate_roundings factors (1 - 2^-53) to the rule (README section 11).
-COMPENSATED = ["orient3d_compensated"]
+COMPENSATED = ["orient3d_compensated", "incircle_compensated"]
 U = Fraction(1, 2 ** 53)
 TWO = Fraction(2)
 errors = []

@@ -1,6 +1,8 @@
 #include "certimesh/predicates/incircle.h"
 
+#include <algorithm>
 #include <array>
+#include <cmath>
 
 #include "certimesh/predicates/non_finite_input.h"
 #include "exact_range.h"
@@ -38,18 +40,116 @@ Sign raw_incircle(const Point2& a, const Point2& b, const Point2& c, const Point
       .sign();
 }
 
+// The lifted determinant of h = (adx, ady, bdx, bdy, cdx, cdy) is the sum over (p, q, r)
+// cyclic in (a, b, c) of plift * pm, plift = pdx^2 + pdy^2, pm = qdx * rdy - rdx * qdy.
+// Indices of p's differences in h: 2 * p and 2 * p + 1.
+struct Cycle {
+  std::size_t p, q, r;
+};
+constexpr std::array<Cycle, 3> cycles{{{0, 1, 2}, {1, 2, 0}, {2, 0, 1}}};
+
+// A rounded lift or minor u with the error-free tails of its computation gathered in lo:
+// u + lo is within a rounding of lo of the exact value.
+struct Split {
+  double u, lo;
+};
+
+// plift = fl(fl(pdx^2) + fl(pdy^2)) (two_product, two_sum), lo = fl(se + fl(xxe + yye)).
+Split lift_of(double x, double y) {
+  double xx, xxe, yy, yye, l, le;
+  two_product(x, x, xx, xxe);
+  two_product(y, y, yy, yye);
+  two_sum(xx, yy, l, le);
+  return {l, le + (xxe + yye)};
+}
+
+// pm = fl(fl(qdx * rdy) - fl(rdx * qdy)), lo = fl(me + fl(pe - qe)).
+Split minor_of(double qx, double ry, double rx, double qy) {
+  double p, pe, q, qe, m, me;
+  two_product(qx, ry, p, pe);
+  two_product(rx, qy, q, qe);
+  two_diff(p, q, m, me);
+  return {m, me + (pe - qe)};
+}
+
+// The first-order change of det(h) when every h_i moves by its tail t_i, in double, per
+// cycle plift * ((qdx * rdy_t + rdy * qdx_t) - (qdy * rdx_t + rdx * qdy_t))
+// + 2 (pdx * pdx_t + pdy * pdy_t) * pm, in the order proofs/gappa/incircle_compensated.g
+// models.
+double first_order_correction(const std::array<double, 6>& h, const std::array<double, 6>& t,
+                              const std::array<Split, 3>& lift,
+                              const std::array<Split, 3>& minor) {
+  std::array<double, 3> corr;
+  for (std::size_t i = 0; i < 3; ++i) {
+    const std::size_t p = 2 * cycles[i].p, q = 2 * cycles[i].q, r = 2 * cycles[i].r;
+    const double cm = (h[q] * t[r + 1] + h[r + 1] * t[q]) - (h[q + 1] * t[r] + h[r] * t[q + 1]);
+    const double e = h[p] * t[p] + h[p + 1] * t[p + 1];
+    corr[i] = lift[i].u * cm + (e + e) * minor[i].u;
+  }
+  return (corr[0] + corr[1]) + corr[2];
+}
+
+// The compensated stage: det(h) in double-double (lifts and minors with their tails, each
+// term plift * pm split by two_product, the three terms added by two_sum), the tails, the
+// cross terms plift * pm_lo + plift_lo * pm and the first-order correction gathered in
+// lo, and est = fl(y + lo). Its distance to the true determinant is at most E * m^4 +
+// 2^-53 |est|, which |est| > incircle_compensated_bound * m2 * m2 covers
+// (proofs/gappa/incircle_compensated.g, proofs/README.md section 12). Branch-free and
+// without expansions: on near-cocircular input it decides where the filter cannot. The
+// evaluation order is the one the proof models. Zero when it cannot decide.
+Sign compensated_stage(const std::array<double, 6>& h, const std::array<double, 6>& t,
+                       double m) {
+  namespace k = filter_constants;
+  std::array<Split, 3> lift, minor;
+  for (std::size_t i = 0; i < 3; ++i) {
+    const std::size_t p = 2 * cycles[i].p, q = 2 * cycles[i].q, r = 2 * cycles[i].r;
+    lift[i] = lift_of(h[p], h[p + 1]);
+    minor[i] = minor_of(h[q], h[r + 1], h[r], h[q + 1]);
+  }
+  const double correction = first_order_correction(h, t, lift, minor);
+  std::array<double, 3> s, lo_term;
+  for (std::size_t i = 0; i < 3; ++i) {
+    double se;
+    two_product(lift[i].u, minor[i].u, s[i], se);
+    lo_term[i] = se + (lift[i].u * minor[i].lo + lift[i].lo * minor[i].u);
+  }
+  double x, x_e, y, y_e;
+  two_sum(s[0], s[1], x, x_e);
+  two_sum(x, s[2], y, y_e);
+  const double lo = ((x_e + y_e) + ((lo_term[0] + lo_term[1]) + lo_term[2])) + correction;
+  const double est = y + lo;
+  const double m2 = m * m;
+  const double bound = k::incircle_compensated_bound * m2 * m2;
+  return static_cast<Sign>(static_cast<int>(est > bound) - static_cast<int>(est < -bound));
+}
+
+// The compensated stage where its preconditions hold (m, the largest |h|, inside the
+// incircle filter's guards; expansion arithmetic exact for h, which also makes every
+// two_product tail of the stage exact: proofs/README.md section 12); zero otherwise or
+// when undecided.
+Sign compensated_sign(const std::array<double, 6>& h, const std::array<double, 6>& t) {
+  namespace k = filter_constants;
+  double m = 0.0;
+  for (double v : h) m = std::max(m, std::fabs(v));
+  if (!(m >= k::incircle_lower_guard && m <= k::incircle_upper_guard)) return Sign::zero;
+  if (!expansion_safe(h, 4)) return Sign::zero;
+  return compensated_stage(h, t, m);
+}
+
 }  // namespace
 
 Sign incircle_exact_stage(const Point2& a, const Point2& b, const Point2& c, const Point2& d) {
   const std::array<double, 8> raw{a.x, a.y, b.x, b.y, c.x, c.y, d.x, d.y};
   if (!all_finite(raw)) throw NonFiniteInput("incircle");
-  std::array<double, 6> diffs;
+  std::array<double, 6> diffs, tails;
   bool exact_diffs = true;
   for (std::size_t i = 0; i < 6; ++i) {
-    double tail;
-    two_diff(raw[i], raw[6 + i % 2], diffs[i], tail);
-    exact_diffs = exact_diffs && tail == 0.0;
+    two_diff(raw[i], raw[6 + i % 2], diffs[i], tails[i]);
+    exact_diffs = exact_diffs && tails[i] == 0.0;
   }
+  // Near-degenerate input mostly ends here, without expansions.
+  const Sign compensated = compensated_sign(diffs, tails);
+  if (compensated != Sign::zero) return compensated;
   if (exact_diffs && expansion_safe(diffs, 4)) return translated_incircle(diffs);
   if (expansion_safe(raw, 4)) return raw_incircle(a, b, c, d);
   return integer_determinant_sign(raw, 2, true);

@@ -1,6 +1,6 @@
 // Near-degenerate tuples at many scales against the rational oracle: the inputs on which
-// the orient2d filter's underflow term and orient3d's compensated stage
-// (proofs/README.md sections 10 and 11) decide, which uniform RapidCheck inputs rarely
+// the orient2d filter's underflow term and the compensated stages of orient3d and
+// incircle (proofs/README.md sections 10 to 12) decide, which uniform RapidCheck inputs rarely
 // reach with tails in every difference. Deterministic (seeded std::mt19937_64).
 #include <gtest/gtest.h>
 
@@ -9,6 +9,7 @@
 #include <cstdint>
 #include <random>
 
+#include "certimesh/predicates/incircle.h"
 #include "certimesh/predicates/orient2d.h"
 #include "certimesh/predicates/orient3d.h"
 #include "rational_oracle.h"
@@ -42,6 +43,69 @@ int oracle3(const std::array<std::array<double, 3>, 4>& p) {
 int oracle2(const std::array<std::array<double, 2>, 3>& p) {
   return certimesh::testing::oracle_sign<2, 3>(p, false);
 }
+int oracle_incircle(const std::array<std::array<double, 2>, 4>& p) {
+  return certimesh::testing::oracle_sign<2, 4>(p, true);
+}
+
+// Four points of a circle, every coordinate rounded once: the centre at an offset of about
+// 3 * scale (so the differences have tails), the radius in [0.1, 1] * scale.
+std::array<std::array<double, 2>, 4> near_cocircular(NearDegenerate& g) {
+  const double cx = g.coordinate(), cy = g.coordinate();
+  const double rad = (0.55 + 0.45 * g.parameter()) * g.scale;
+  std::array<std::array<double, 2>, 4> pts;
+  for (auto& pt : pts) {
+    const double th = 3.14159265358979 * g.parameter();
+    pt = {cx + rad * std::cos(th), cy + rad * std::sin(th)};
+  }
+  return pts;
+}
+
+// Four points of the circle x^2 + y^2 = 25 (integer points), scaled by a power of two and
+// moved by a dyadic centre: exactly cocircular, so only the expansion stages may answer
+// (zero), and one coordinate moved by one ulp: a sign decided at the last bit.
+std::array<std::array<double, 2>, 4> exactly_cocircular(NearDegenerate& g, int i) {
+  static constexpr std::array<std::array<double, 2>, 12> on_circle{
+      {{5, 0}, {4, 3}, {3, 4}, {0, 5}, {-3, 4}, {-4, 3}, {-5, 0}, {-4, -3}, {-3, -4}, {0, -5},
+       {3, -4}, {4, -3}}};
+  const double cx = std::ldexp(std::round(g.coordinate() / g.scale * 1024.0), -10) * g.scale;
+  const double cy = std::ldexp(std::round(g.coordinate() / g.scale * 1024.0), -10) * g.scale;
+  std::array<std::array<double, 2>, 4> pts;
+  for (std::size_t k = 0; k < 4; ++k) {
+    const auto& q = on_circle[(static_cast<std::size_t>(i) * 5 + k * 3) % 12];
+    pts[k] = {cx + q[0] * g.scale / 8.0, cy + q[1] * g.scale / 8.0};
+  }
+  if (i % 2 == 1) pts[3][0] = std::nextafter(pts[3][0], INFINITY);
+  return pts;
+}
+
+// Integer points of the circle x^2 + y^2 = N, N the product of the 18 primes 5, 13, ...,
+// 173 (all 1 mod 4), about 2^105.7: each prime is a Gaussian integer times its conjugate,
+// so each choice of conjugates gives a point (coordinates below 2^53, exact doubles).
+// Points on opposite sides have differences of 54 bits: rounded differences with tails,
+// and an exactly zero determinant that a stage must not mistake for a sign.
+std::array<double, 2> gaussian_circle_point(std::mt19937_64& rng) {
+  static constexpr std::array<std::array<std::int64_t, 2>, 18> primes{
+      {{2, 1}, {3, 2}, {4, 1}, {5, 2}, {6, 1}, {5, 4}, {7, 2}, {6, 5}, {8, 3}, {8, 5}, {9, 4},
+       {10, 1}, {10, 3}, {8, 7}, {11, 4}, {10, 7}, {11, 6}, {13, 2}}};
+  std::int64_t x = 1, y = 0;
+  for (const auto& g : primes) {
+    const std::int64_t gy = (rng() & 1u) != 0 ? g[1] : -g[1];  // the prime or its conjugate
+    const std::int64_t nx = x * g[0] - y * gy, ny = x * gy + y * g[0];
+    x = nx;
+    y = ny;
+  }
+  // one of the eight symmetries of the circle
+  const unsigned k = static_cast<unsigned>(rng() % 8u);
+  if ((k & 1u) != 0) std::swap(x, y);
+  return {static_cast<double>((k & 2u) != 0 ? -x : x), static_cast<double>((k & 4u) != 0 ? -y : y)};
+}
+
+void expect_incircle_matches_oracle(const std::array<std::array<double, 2>, 4>& pts, int e, int i) {
+  const pr::Point2 a{pts[0][0], pts[0][1]}, b{pts[1][0], pts[1][1]}, c{pts[2][0], pts[2][1]},
+      d{pts[3][0], pts[3][1]};
+  ASSERT_EQ(pr::to_int(pr::incircle(a, b, c, d)), oracle_incircle(pts))
+      << "scale 2^" << e << " case " << i;
+}
 
 TEST(NearDegenerateScales, Orient3dNearCoplanarMatchesOracle) {
   int decided_nonzero = 0, total = 0;
@@ -66,6 +130,57 @@ TEST(NearDegenerateScales, Orient3dNearCoplanarMatchesOracle) {
   }
   // The generator must produce near-coplanar, not exactly coplanar, tuples.
   EXPECT_GT(decided_nonzero, total * 9 / 10);
+}
+
+TEST(NearDegenerateScales, IncircleNearCocircularMatchesOracle) {
+  // Inside the guards [2^-240, 2^250] of the compensated stage, at both ends of them, and
+  // outside them (the stage declines, the expansion stages answer).
+  int nonzero = 0, total = 0;
+  for (int e : {-300, -238, -100, -20, 0, 20, 100, 246, 260}) {
+    NearDegenerate g{std::mt19937_64(0x5eed0004u + static_cast<unsigned>(e + 1000)), std::ldexp(1.0, e)};
+    for (int i = 0; i < cases_per_scale; ++i) {
+      const auto pts = near_cocircular(g);
+      ASSERT_NO_FATAL_FAILURE(expect_incircle_matches_oracle(pts, e, i));
+      nonzero += oracle_incircle(pts) != 0;
+      ++total;
+    }
+    for (int i = 0; i < cases_per_scale / 10; ++i)
+      ASSERT_NO_FATAL_FAILURE(expect_incircle_matches_oracle(exactly_cocircular(g, i), e, i));
+  }
+  // The generator must produce near-cocircular, not exactly cocircular, tuples.
+  EXPECT_GT(nonzero, total * 9 / 10);
+}
+
+TEST(NearDegenerateScales, IncircleExactlyCocircularIsZero) {
+  // The oracle agreeing is not enough: the unmoved tuples must be exactly cocircular.
+  NearDegenerate g{std::mt19937_64(0x5eed0005u), 1.0};
+  for (int i = 0; i < 40; i += 2) {
+    const auto pts = exactly_cocircular(g, i);
+    ASSERT_EQ(oracle_incircle(pts), 0) << "case " << i;
+    ASSERT_NO_FATAL_FAILURE(expect_incircle_matches_oracle(pts, 0, i));
+  }
+}
+
+TEST(NearDegenerateScales, IncircleCocircularWithTailsMatchesOracle) {
+  // Exactly cocircular integer points (zero) and the same moved by one ulp (a sign at the
+  // last bit), scaled by powers of two inside and outside the compensated stage's guards.
+  int zeros = 0, total = 0;
+  for (int e : {-290, -240, -100, 0, 100, 190}) {
+    std::mt19937_64 rng(0x5eed0006u + static_cast<unsigned>(e + 1000));
+    for (int i = 0; i < cases_per_scale / 3; ++i) {
+      std::array<std::array<double, 2>, 4> pts;
+      for (auto& pt : pts) {
+        const auto q = gaussian_circle_point(rng);
+        pt = {std::ldexp(q[0], e), std::ldexp(q[1], e)};
+      }
+      if (i % 3 == 2) pts[i % 4][i % 2] = std::nextafter(pts[i % 4][i % 2], (i % 5 < 2) ? -INFINITY : INFINITY);
+      ASSERT_NO_FATAL_FAILURE(expect_incircle_matches_oracle(pts, e, i));
+      zeros += oracle_incircle(pts) == 0;
+      ++total;
+    }
+  }
+  // Mostly exact zeros (a repeated point also gives zero): the case the stage must leave.
+  EXPECT_GT(zeros, total / 2);
 }
 
 TEST(NearDegenerateScales, Orient2dNearCollinearFilterAndExactMatchOracle) {

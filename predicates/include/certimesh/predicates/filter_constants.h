@@ -78,5 +78,12 @@ inline constexpr double orient3d_stage2_bound = 0x1.0814000000004p-99;  // 1.627
 // (proofs/README.md, section 11).
 // proofs/gappa/orient3d_compensated.g: E3 = 0x1.5906000000002p-97 (about 690 * 2^-106).
 inline constexpr double orient3d_compensated_bound = 0x1.5906800000005p-97;  // 8.505532561645966e-30
+// incircle's compensated stage (incircle.cpp, tried first in the exact stage): the same
+// shape with one maximum m over both axes; the sign of est = fl(y + lo) is certified when
+// |est| > bound * m2 * m2, m2 = fl(m * m). bound is (E3 + the underflow charge) / (1 -
+// 2^-53)^5 rounded up: four roundings of the bound (m2 twice) and the relative rounding of
+// est (proofs/README.md, section 12).
+// proofs/gappa/incircle_compensated.g: E3 = 0x1.6981800000003p-95 (about 2892 * 2^-106).
+inline constexpr double incircle_compensated_bound = 0x1.6981a00000007p-95;  // 3.5647278081906436e-29
 
 }  // namespace certimesh::predicates::filter_constants
