@@ -9,8 +9,8 @@
 // neighbours, every star triangle strictly counterclockwise).
 #include <algorithm>
 #include <limits>
-#include <numbers>
 
+#include "golden_section_search.h"
 #include "input_segment_run_2.h"
 
 namespace certimesh::topology {
@@ -18,7 +18,6 @@ namespace certimesh::topology {
 namespace {
 
 constexpr double invalid = -1.0;
-constexpr int golden_section_steps = 40;
 
 // v's star with v at a trial position.
 class SlidingStar {
@@ -58,29 +57,8 @@ class SlidingStar {
 // The best fraction in the open interval between the neighbours' fractions by golden-section
 // search, and the star's quality there (q0 and NaN when nothing beats q0).
 std::pair<double, double> search_segment(SlidingStar& star, double lo, double hi, double q0) {
-  constexpr double ratio = std::numbers::phi - 1.0;
-  double x1 = hi - ratio * (hi - lo), x2 = lo + ratio * (hi - lo);
-  double f1 = star.quality(star.at(x1)), f2 = star.quality(star.at(x2));
-  double best_f = std::numeric_limits<double>::quiet_NaN(), best_q = q0;
-  const auto consider = [&](double f, double q) {
-    if (q > best_q) best_f = f, best_q = q;
-  };
-  consider(x1, f1);
-  consider(x2, f2);
-  for (int step = 0; step < golden_section_steps; ++step) {
-    if (f1 < f2) {
-      lo = x1, x1 = x2, f1 = f2;
-      x2 = lo + ratio * (hi - lo);
-      f2 = star.quality(star.at(x2));
-      consider(x2, f2);
-    } else {
-      hi = x2, x2 = x1, f2 = f1;
-      x1 = hi - ratio * (hi - lo);
-      f1 = star.quality(star.at(x1));
-      consider(x1, f1);
-    }
-  }
-  return {best_f, best_q};
+  return local::golden_section_best([&](double f) { return star.quality(star.at(f)); }, lo, hi, q0,
+                                    std::numeric_limits<double>::quiet_NaN());
 }
 
 }  // namespace

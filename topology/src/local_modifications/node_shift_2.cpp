@@ -12,10 +12,10 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <numbers>
 #include <tuple>
 #include <utility>
 
+#include "golden_section_search.h"
 #include "input_segment_run_2.h"
 #include "local_geometry_2.h"
 
@@ -25,7 +25,6 @@ namespace {
 
 constexpr double sqrt_epsilon = 1.4901161193847656e-08;  // √ε_mach = 2^-26
 constexpr double invalid = -1.0;
-constexpr int golden_section_steps = 40;
 
 class StarAtPosition {
  public:
@@ -105,30 +104,7 @@ std::pair<double, double> search_along(StarAtPosition& at, const Point2d& p, con
   const double tau_max = at.step_bound(p, direction);
   if (!(tau_max > 0.0) || !std::isfinite(tau_max)) return {0.0, q0};
   const auto position = [&](double tau) { return Point2d{p[0] + tau * direction[0], p[1] + tau * direction[1]}; };
-  constexpr double ratio = std::numbers::phi - 1.0;
-  double lo = 0.0, hi = tau_max;
-  double x1 = hi - ratio * (hi - lo), x2 = lo + ratio * (hi - lo);
-  double f1 = at.quality(position(x1)), f2 = at.quality(position(x2));
-  double best_tau = 0.0, best_q = q0;
-  const auto consider = [&](double tau, double q) {
-    if (q > best_q) best_tau = tau, best_q = q;
-  };
-  consider(x1, f1);
-  consider(x2, f2);
-  for (int step = 0; step < golden_section_steps; ++step) {
-    if (f1 < f2) {
-      lo = x1, x1 = x2, f1 = f2;
-      x2 = lo + ratio * (hi - lo);
-      f2 = at.quality(position(x2));
-      consider(x2, f2);
-    } else {
-      hi = x2, x2 = x1, f2 = f1;
-      x1 = hi - ratio * (hi - lo);
-      f1 = at.quality(position(x1));
-      consider(x1, f1);
-    }
-  }
-  return {best_tau, best_q};
+  return local::golden_section_best([&](double tau) { return at.quality(position(tau)); }, 0.0, tau_max, q0, 0.0);
 }
 
 bool usable(const Point2d& g) {
