@@ -28,7 +28,7 @@ std::uint32_t Front2::insert(std::uint32_t a, std::uint32_t b, std::uint32_t ran
   edges_[id] = Edge{a, b, first_out_[a], first_in_[b], true};
   first_out_[a] = id;
   first_in_[b] = id;
-  heap_.push_back(HeapEntry{rank, length2, a, b, id});
+  heap_.push_back(HeapEntry{length2, rank, a, b, id});
   std::push_heap(heap_.begin(), heap_.end(), after);
   ++live_;
   return id;

@@ -53,10 +53,9 @@ class Front2 {
   std::size_t live_count() const { return live_; }
 
  private:
-  struct HeapEntry {
-    std::uint32_t rank;
+  struct HeapEntry {  // 24 bytes: the double first, so that no padding is needed
     double length2;
-    std::uint32_t a, b, edge;
+    std::uint32_t rank, a, b, edge;
   };
   // Heap order: the least (rank, length2, a, b) on top.
   static bool after(const HeapEntry& x, const HeapEntry& y) {
