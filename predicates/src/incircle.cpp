@@ -48,11 +48,8 @@ struct Cycle {
 };
 constexpr std::array<Cycle, 3> cycles{{{0, 1, 2}, {1, 2, 0}, {2, 0, 1}}};
 
-// A rounded lift or minor u with the error-free tails of its computation gathered in lo:
-// u + lo is within a rounding of lo of the exact value.
-struct Split {
-  double u, lo;
-};
+// Lifts and minors carry the error-free tails of their computation (detail/expansion.h).
+using Split = Compensated;
 
 // plift = fl(fl(pdx^2) + fl(pdy^2)) (two_product, two_sum), lo = fl(se + fl(xxe + yye)).
 Split lift_of(double x, double y) {
@@ -61,15 +58,6 @@ Split lift_of(double x, double y) {
   two_product(y, y, yy, yye);
   two_sum(xx, yy, l, le);
   return {l, le + (xxe + yye)};
-}
-
-// pm = fl(fl(qdx * rdy) - fl(rdx * qdy)), lo = fl(me + fl(pe - qe)).
-Split minor_of(double qx, double ry, double rx, double qy) {
-  double p, pe, q, qe, m, me;
-  two_product(qx, ry, p, pe);
-  two_product(rx, qy, q, qe);
-  two_diff(p, q, m, me);
-  return {m, me + (pe - qe)};
 }
 
 // The first-order change of det(h) when every h_i moves by its tail t_i, in double, per
@@ -84,7 +72,7 @@ double first_order_correction(const std::array<double, 6>& h, const std::array<d
     const std::size_t p = 2 * cycles[i].p, q = 2 * cycles[i].q, r = 2 * cycles[i].r;
     const double cm = (h[q] * t[r + 1] + h[r + 1] * t[q]) - (h[q + 1] * t[r] + h[r] * t[q + 1]);
     const double e = h[p] * t[p] + h[p + 1] * t[p + 1];
-    corr[i] = lift[i].u * cm + (e + e) * minor[i].u;
+    corr[i] = lift[i].value * cm + (e + e) * minor[i].value;
   }
   return (corr[0] + corr[1]) + corr[2];
 }
@@ -104,14 +92,14 @@ Sign compensated_stage(const std::array<double, 6>& h, const std::array<double, 
   for (std::size_t i = 0; i < 3; ++i) {
     const std::size_t p = 2 * cycles[i].p, q = 2 * cycles[i].q, r = 2 * cycles[i].r;
     lift[i] = lift_of(h[p], h[p + 1]);
-    minor[i] = minor_of(h[q], h[r + 1], h[r], h[q + 1]);
+    minor[i] = compensated_minor(h[q], h[r + 1], h[r], h[q + 1]);  // pm = qdx rdy - rdx qdy
   }
   const double correction = first_order_correction(h, t, lift, minor);
   std::array<double, 3> s, lo_term;
   for (std::size_t i = 0; i < 3; ++i) {
     double se;
-    two_product(lift[i].u, minor[i].u, s[i], se);
-    lo_term[i] = se + (lift[i].u * minor[i].lo + lift[i].lo * minor[i].u);
+    two_product(lift[i].value, minor[i].value, s[i], se);
+    lo_term[i] = se + (lift[i].value * minor[i].lo + lift[i].lo * minor[i].value);
   }
   double x, x_e, y, y_e;
   two_sum(s[0], s[1], x, x_e);

@@ -44,24 +44,10 @@ double first_order_correction(const std::array<double, 9>& h, const std::array<d
          ((t[6] * ccx + t[7] * ccy) + t[8] * ccz);
 }
 
-// A cofactor u1*v2 - u2*v1 of h: m = fl(fl(u1*v2) - fl(u2*v1)), the value the correction
-// uses, and lo = fl(me + fl(pe - qe)) from its error-free tails (two_product, two_diff).
-struct Cofactor {
-  double m, lo;
-};
-
-Cofactor cofactor(double u1, double v2, double u2, double v1) {
-  double p, pe, q, qe, m, me;
-  two_product(u1, v2, p, pe);
-  two_product(u2, v1, q, qe);
-  two_diff(p, q, m, me);
-  return {m, me + (pe - qe)};
-}
-
 // The compensated stage: det(h) in double-double along the x column (cofactors with their
-// tails, each term h * m split by two_product, the three terms added by two_sum), the
-// tails and the first-order correction gathered in lo, and est = fl(y + lo). Its distance
-// to the true determinant is at most E3 * maxx * maxy * maxz + 2^-53 |est|, which
+// tails from compensated_minor, each term h * m split by two_product, the three terms added
+// by two_sum), the tails and the first-order correction gathered in lo, and est =
+// fl(y + lo). Its distance to the true determinant is at most E3 * maxx * maxy * maxz + 2^-53 |est|, which
 // |est| > orient3d_compensated_bound * maxx * maxy * maxz covers
 // (proofs/gappa/orient3d_compensated.g, proofs/README.md section 11). Branch-free and
 // without expansions: on near-coplanar input it decides where the filter cannot. The
@@ -69,13 +55,13 @@ Cofactor cofactor(double u1, double v2, double u2, double v1) {
 Sign compensated_stage(const std::array<double, 9>& h, double correction, double maxx,
                        double maxy, double maxz) {
   namespace k = filter_constants;
-  const Cofactor ca = cofactor(h[4], h[8], h[5], h[7]);  // bdy * cdz - bdz * cdy
-  const Cofactor cb = cofactor(h[7], h[2], h[8], h[1]);  // cdy * adz - cdz * ady
-  const Cofactor cc = cofactor(h[1], h[5], h[2], h[4]);  // ady * bdz - adz * bdy
+  const Compensated ca = compensated_minor(h[4], h[8], h[5], h[7]);  // bdy * cdz - bdz * cdy
+  const Compensated cb = compensated_minor(h[7], h[2], h[8], h[1]);  // cdy * adz - cdz * ady
+  const Compensated cc = compensated_minor(h[1], h[5], h[2], h[4]);  // ady * bdz - adz * bdy
   double sa, sa_e, sb, sb_e, sc, sc_e;
-  two_product(h[0], ca.m, sa, sa_e);
-  two_product(h[3], cb.m, sb, sb_e);
-  two_product(h[6], cc.m, sc, sc_e);
+  two_product(h[0], ca.value, sa, sa_e);
+  two_product(h[3], cb.value, sb, sb_e);
+  two_product(h[6], cc.value, sc, sc_e);
   const double lo_a = sa_e + h[0] * ca.lo;
   const double lo_b = sb_e + h[3] * cb.lo;
   const double lo_c = sc_e + h[6] * cc.lo;

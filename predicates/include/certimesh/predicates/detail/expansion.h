@@ -57,6 +57,26 @@ inline void two_product(double a, double b, double& x, double& y) noexcept {
   y = alo * blo - err3;
 }
 
+// ---- double-double terms of the compensated stages -----------------------------------
+
+/// A rounded value with the error-free tails of its computation gathered in lo: value + lo
+/// is within a rounding of lo of the exact result.
+struct Compensated {
+  double value, lo;
+};
+
+/// The 2x2 minor a*d - b*c: value = fl(fl(a*d) - fl(b*c)), lo = fl(me + fl(pe - qe)) from
+/// the error-free tails of the two products (pe, qe) and of the difference (me), in the
+/// order the compensated stages' Gappa scripts model (orient3d's cofactors, incircle's
+/// minors; proofs/README.md sections 11-12).
+inline Compensated compensated_minor(double a, double d, double b, double c) noexcept {
+  double p, pe, q, qe, m, me;
+  two_product(a, d, p, pe);
+  two_product(b, c, q, qe);
+  two_diff(p, q, m, me);
+  return {m, me + (pe - qe)};
+}
+
 // ---- expansions -----------------------------------------------------------------------
 
 /// An exact value sum(c[0..n)), components non-overlapping and increasing in magnitude.
