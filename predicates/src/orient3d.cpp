@@ -47,7 +47,8 @@ double first_order_correction(const std::array<double, 9>& h, const std::array<d
 // The compensated stage: det(h) in double-double along the x column (cofactors with their
 // tails from compensated_minor, each term h * m split by two_product, the three terms added
 // by two_sum), the tails and the first-order correction gathered in lo, and est =
-// fl(y + lo). Its distance to the true determinant is at most E3 * maxx * maxy * maxz + 2^-53 |est|, which
+// fl(y + lo). Its distance to the true determinant is at most
+// E3 * maxx * maxy * maxz + 2^-53 |est|, which
 // |est| > orient3d_compensated_bound * maxx * maxy * maxz covers
 // (proofs/gappa/orient3d_compensated.g, proofs/README.md section 11). Branch-free and
 // without expansions: on near-coplanar input it decides where the filter cannot. The
