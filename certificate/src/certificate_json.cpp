@@ -91,7 +91,11 @@ std::string certificate_json(const Report& report, const std::string& certimesh_
       {"worst_element", std::to_string(s.worst_element)},
       {"vertices_exactly_on_domain_boundary", std::to_string(s.vertices_exactly_on_domain_boundary)},
       {"vertices_in_rounding_box_only", std::to_string(s.vertices_in_rounding_box_only)},
-      {"max_boundary_deviation", number(s.max_boundary_deviation)}};
+      {"max_boundary_deviation", number(s.max_boundary_deviation)},
+      {"measure", number(s.measure)},
+      {"domain_measure", number(s.domain_measure)},
+      {"measure_difference", number(s.measure_difference)},
+      {"measure_difference_bound", number(s.measure_difference_bound)}};
   out += ",\n  \"statistics\": {";
   for (const auto& [key, value] : stats) out += std::string(key == stats[0].first ? "\n" : ",\n") + "    \"" + key + "\": " + value;
   return out + "\n  }\n}\n";

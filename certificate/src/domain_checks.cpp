@@ -12,13 +12,11 @@
 #include "certimesh/predicates/orient2d.h"
 #include "certimesh/predicates/orient3d.h"
 #include "close_pairs.h"
+#include "rational.h"
 #include "stages.h"
 
 namespace certimesh::certificate::detail {
 namespace {
-
-using Q = mpq_class;
-using Vec = std::array<Q, 3>;
 
 using Edge = std::pair<Index, Index>;
 
@@ -31,11 +29,6 @@ struct Domain {
 Q half_way(double x, double toward) {
   const double y = std::nextafter(x, toward);
   return std::isfinite(y) ? (Q(x) + Q(y)) / 2 : Q(x);
-}
-
-Vec minus(const Vec& a, const Vec& b) { return {a[0] - b[0], a[1] - b[1], a[2] - b[2]}; }
-Vec cross(const Vec& a, const Vec& b) {
-  return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
 }
 
 // Point x seen along coordinate axis k (3D: the other two coordinates, in order; 2D: x itself).
@@ -178,20 +171,42 @@ struct OnFacet {
   friend bool operator<(const OnFacet& a, const OnFacet& b) { return a.vertex != b.vertex ? a.vertex < b.vertex : a.facet < b.facet; }
 };
 
-// Every (mesh vertex, domain facet) incidence by the rounding-box rule. A point outside a facet's
-// double bounding box has its rounding box outside too: the grid's box test loses nothing.
+// Which mesh vertices are domain vertices (identical coordinates). Such a vertex is an exact
+// input point: it lies on a domain facet only exactly (and then, the domain being valid, at one
+// of the facet's own vertices), never through its rounding box -- otherwise rounding slack
+// would let the mesh boundary hop from one domain component onto another (issue 12).
+std::vector<char> domain_vertices_in_mesh(const MeshView& m, const Domain& d) {
+  std::vector<Index> order(d.geo.vertex_count);
+  std::iota(order.begin(), order.end(), Index{0});
+  auto at = [](const MeshView& g, Index v) { return g.xyz + static_cast<std::size_t>(v) * g.dim; };
+  auto less = [&](const double* a, const double* b) { return std::lexicographical_compare(a, a + m.dim, b, b + m.dim); };
+  std::sort(order.begin(), order.end(), [&](Index a, Index b) { return less(at(d.geo, a), at(d.geo, b)); });
+  std::vector<char> pinned(m.vertex_count, 0);
+  for (Index v = 0; v < m.vertex_count; ++v) {
+    const double* p = at(m, v);
+    const auto it = std::lower_bound(order.begin(), order.end(), p, [&](Index u, const double* q) { return less(at(d.geo, u), q); });
+    pinned[v] = it != order.end() && std::equal(p, p + m.dim, at(d.geo, *it));
+  }
+  return pinned;
+}
+
+// Every (mesh vertex, domain facet) incidence by the rounding-box rule (exact only, for a mesh
+// vertex that is a domain vertex). A point outside a facet's double bounding box has its
+// rounding box outside too: the grid's box test loses nothing.
 std::vector<OnFacet> incidences(const MeshView& m, const Domain& d) {
   std::vector<Box> boxes;
   for (std::size_t f = 0; f < d.facets.size(); ++f) boxes.push_back(facet_box(d.geo, d.facets.facet(f), d.geo.dim));
   for (Index v = 0; v < m.vertex_count; ++v) boxes.push_back(facet_box(m, &v, 1));
+  const std::vector<char> pinned = domain_vertices_in_mesh(m, d);
   std::vector<OnFacet> out;
   const std::size_t facets = d.facets.size();
   BoxGrid(boxes, m.dim).any_pair([&](std::size_t i, std::size_t j) {
     if (i >= facets || j < facets) return false;
     const auto v = static_cast<Index>(j - facets);
     const double* p = m.xyz + static_cast<std::size_t>(v) * m.dim;
-    const bool exact = lies_exactly_on(corners(d.geo, d.facets.facet(i), m.dim), m.dim, p);  // then its box meets it
-    if (exact || (!box_certainly_misses(corners(d.geo, d.facets.facet(i), m.dim), m.dim, p) && meets_box(facet_points(d, i), m.dim, p)))
+    const auto s = corners(d.geo, d.facets.facet(i), m.dim);
+    const bool exact = lies_exactly_on(s, m.dim, p);  // then its box meets it
+    if (exact || (!pinned[v] && !box_certainly_misses(s, m.dim, p) && meets_box(facet_points(d, i), m.dim, p)))
       out.push_back({v, static_cast<std::uint32_t>(i), exact});
     return false;
   });
@@ -199,13 +214,14 @@ std::vector<OnFacet> incidences(const MeshView& m, const Domain& d) {
   return out;
 }
 
-// Distance from mesh vertex v to the line / plane of domain facet f, for the report: the
-// numerator is exact (the deviations are below an ulp, so double arithmetic would lose them).
+// Distance from mesh vertex v to the line / plane of domain facet f, for the report: exact up
+// to the final rounding (the deviations are below an ulp, and at coordinates near 2^900 or
+// 2^-1000 the squares would overflow or underflow in double).
 double deviation(const MeshView& m, Index v, const Domain& d, std::size_t f) {
-  const std::vector<Vec> p = facet_points(d, f), q = points_of(m, &v, 1);
-  const Vec e = minus(p[1], p[0]), n = m.dim == 2 ? Vec{-e[1], e[0], 0} : cross(e, minus(p[2], p[0])), w = minus(q[0], p[0]);
-  const Q dot = n[0] * w[0] + n[1] * w[1] + n[2] * w[2];
-  return std::abs(dot.get_d()) / std::sqrt(Q(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]).get_d());
+  const std::vector<Vec> p = facet_points(d, f);
+  const Vec e = minus(p[1], p[0]), n = m.dim == 2 ? Vec{-e[1], e[0], 0} : cross(e, minus(p[2], p[0]));
+  const Q along = dot(n, minus(point_of(m, v), p[0]));
+  return sqrt_of(along * along / dot(n, n));
 }
 
 // Incidences of every mesh vertex, and the first domain facet all of `count` vertices are on.
@@ -267,13 +283,17 @@ std::int64_t find_vertex(const MeshView& m, const std::vector<Index>& lex, const
 
 // From the mesh vertex at domain point a to the one at b along mesh edges whose ends are on
 // segment ab (rounding-box rule), greedily towards b: success shows ab covered by mesh edges.
+// `path` receives the mesh vertices from a to b; `seen` (one stamp per vertex, `stamp` this
+// walk's) keeps each vertex once without a search.
 bool walk(const MeshView& m, const std::vector<Edge>& edges, const std::vector<Index>& lex, const double* a,
-          const double* b, std::vector<Edge>& chain) {
+          const double* b, std::vector<Index>& path, std::vector<std::uint32_t>& seen, std::uint32_t stamp) {
   const std::int64_t start = find_vertex(m, lex, a), target = find_vertex(m, lex, b);
+  path.clear();
   if (start < 0 || target < 0) return false;
-  const std::vector<Vec> seg = {Vec{a[0], a[1], m.dim == 3 ? Q(a[2]) : Q(0)}, Vec{b[0], b[1], m.dim == 3 ? Q(b[2]) : Q(0)}};
-  std::vector<Index> seen{static_cast<Index>(start)};
-  for (Index u = seen[0]; u != target;) {
+  const std::vector<Vec> seg = {point_of(a, m.dim), point_of(b, m.dim)};
+  path.push_back(static_cast<Index>(start));
+  seen[path[0]] = stamp;
+  for (Index u = path[0]; u != target;) {
     std::int64_t best = -1;
     double best_distance = std::numeric_limits<double>::infinity();
     const auto r = std::equal_range(edges.begin(), edges.end(), Edge{u, 0}, [](const Edge& x, const Edge& y) { return x.first < y.first; });
@@ -281,13 +301,13 @@ bool walk(const MeshView& m, const std::vector<Edge>& edges, const std::vector<I
       const double* p = m.xyz + static_cast<std::size_t>(it->second) * m.dim;
       double dist = 0;  // max-norm: squares would overflow for huge coordinates
       for (int k = 0; k < m.dim; ++k) dist = std::max(dist, std::abs(p[k] - b[k]));
-      if ((best < 0 || dist < best_distance) && std::find(seen.begin(), seen.end(), it->second) == seen.end() &&
+      if ((best < 0 || dist < best_distance) && seen[it->second] != stamp &&
           (lies_exactly_on({a, b, nullptr}, m.dim, p) || (!box_certainly_misses({a, b, nullptr}, m.dim, p) && meets_box(seg, m.dim, p))))
         best = it->second, best_distance = dist;
     }
     if (best < 0) return false;
-    chain.push_back(std::minmax(u, static_cast<Index>(best)));
-    seen.push_back(u = static_cast<Index>(best));
+    path.push_back(u = static_cast<Index>(best));
+    seen[u] = stamp;
   }
   return true;
 }
@@ -295,7 +315,9 @@ bool walk(const MeshView& m, const std::vector<Edge>& edges, const std::vector<I
 // Every domain facet covered: its edges by chains of mesh edges (walk), and in 3D its area by
 // the mesh facets on it, whose mod-2 boundary must be exactly those chains: a 2-chain with
 // that boundary covers the face an odd number of times, and non-overlapping facets cover once.
-Finding coverage(const MeshView& m, const Domain& d, const std::vector<Index>& lex, const OnDomain& on) {
+// In 2D the chains then go to check_segment_chains (how each segment is covered).
+Finding coverage(const MeshView& m, const FacetSet& b, const Domain& d, const std::vector<Index>& lex, const OnDomain& on,
+                 Statistics& stats) {
   std::vector<char> near(m.vertex_count, 0);  // on the domain boundary: only these matter below
   for (const OnFacet& o : on.on) near[o.vertex] = 1;
   const std::vector<Edge> edges = mesh_edges(m, near);
@@ -310,15 +332,24 @@ Finding coverage(const MeshView& m, const Domain& d, const std::vector<Index>& l
   std::sort(on_face.begin(), on_face.end());
   on_face.erase(std::unique(on_face.begin(), on_face.end()), on_face.end());
   auto next = on_face.begin();
+  std::vector<std::uint32_t> seen(m.vertex_count, 0);
+  std::uint32_t stamp = 0;
+  std::vector<SegmentChain> chains;
   for (std::size_t f = 0; f < d.facets.size(); ++f) {
     const Index* x = d.facets.facet(f);
     std::vector<Edge> chain, edges_on_face, odd;
-    for (int i = 0; i < (m.dim == 2 ? 1 : 3); ++i)
-      if (!walk(m, edges, lex, d.geo.xyz + static_cast<std::size_t>(x[i]) * m.dim, d.geo.xyz + static_cast<std::size_t>(x[(i + 1) % m.dim]) * m.dim, chain))
+    std::vector<Index> path;
+    for (int i = 0; i < (m.dim == 2 ? 1 : 3); ++i) {
+      if (!walk(m, edges, lex, d.geo.xyz + static_cast<std::size_t>(x[i]) * m.dim, d.geo.xyz + static_cast<std::size_t>(x[(i + 1) % m.dim]) * m.dim, path, seen, ++stamp))
         return finding(Defect::domain_boundary_not_covered, -1, static_cast<std::int64_t>(f), -1,
                        "domain facet " + std::to_string(f) + ": its edge from domain vertex " + std::to_string(x[i]) + " to " +
                            std::to_string(x[(i + 1) % m.dim]) + " is not covered by mesh edges on it");
-    if (m.dim == 2) continue;
+      for (std::size_t k = 0; k + 1 < path.size(); ++k) chain.push_back(std::minmax(path[k], path[k + 1]));
+    }
+    if (m.dim == 2) {
+      chains.push_back({static_cast<std::int64_t>(f), std::move(path)});
+      continue;
+    }
     for (; next != on_face.end() && next->first == f; ++next)
       for (int i = 0; i < 3; ++i) edges_on_face.push_back(std::minmax(next->second[i], next->second[(i + 1) % 3]));
     std::sort(edges_on_face.begin(), edges_on_face.end());
@@ -332,7 +363,7 @@ Finding coverage(const MeshView& m, const Domain& d, const std::vector<Index>& l
       return finding(Defect::domain_boundary_not_covered, -1, static_cast<std::int64_t>(f), -1,
                      "domain triangle " + std::to_string(f) + " is not covered exactly by the mesh boundary triangles on it");
   }
-  return {};
+  return m.dim == 2 ? check_segment_chains(m, b, chains, stats) : Finding{};
 }
 
 // hole_covered, then region_not_meshed: each hole point strictly outside the mesh (W = 0, off
@@ -376,7 +407,7 @@ Finding check_domain(const MeshView& m, const FacetSet& boundary, const Componen
   if (f.defect != Defect::none) return f;
   const OnDomain on{incidences(m, d)};
   f = boundary_on_domain(m, boundary, d, on, stats);
-  if (f.defect == Defect::none) f = coverage(m, d, lex_order, on);
+  if (f.defect == Defect::none) f = coverage(m, boundary, d, lex_order, on, stats);
   if (f.defect == Defect::none) f = holes_and_regions(m, boundary, comps, domain);
   return f;
 }

@@ -48,6 +48,18 @@ Finding check_single_cover(const MeshView& m, const FacetSet& boundary, Componen
 int winding_number(const MeshView& m, const FacetSet& boundary, const std::vector<std::size_t>& c, const double* p);
 int enclosed_measure_sign(const MeshView& m, const FacetSet& set, const std::vector<std::size_t>& facets);
 
+/// The mesh vertices along domain segment `segment`, from the mesh vertex at its first domain
+/// vertex to the one at its second, consecutive ones joined by a mesh edge (2D).
+struct SegmentChain {
+  std::int64_t segment;
+  std::vector<Index> path;
+};
+
+/// Condition 6d, 2D: every chain all boundary facets oriented alike or all interior edges,
+/// every boundary facet on exactly one chain; the exact area difference and its bound.
+Finding check_segment_chains(const MeshView& m, const FacetSet& boundary, const std::vector<SegmentChain>& chains,
+                             Statistics& stats);
+
 /// Condition 6 (invalid_domain .. region_not_meshed, in the order of defect.h) and the
 /// statistics of boundary vertices on the domain boundary.
 Finding check_domain(const MeshView& m, const FacetSet& boundary, const Components& comps,

@@ -72,17 +72,24 @@ int winding_3d(const MeshView& m, const FacetSet& b, const std::vector<std::size
 
 int enclosed_measure_sign(const MeshView& m, const FacetSet& set, const std::vector<std::size_t>& facets) {
   const Index r = set.facet(facets[0])[0];
-  double sum = 0, permanents = 0, magnitudes = 0;
+  double sum = 0, permanents = 0, magnitudes = 0, largest = 0;
   for (std::size_t f : facets) {
     const double term = facet_det<double>(m, set.facet(f), r, false), permanent = facet_det<double>(m, set.facet(f), r, true);
     sum += term, permanents += permanent, magnitudes += std::abs(term);
+    for (int i = 0; i < m.dim; ++i)
+      for (int k = 0; k < m.dim; ++k) largest = std::max(largest, std::abs(m.coord(set.facet(f)[i], k) - m.coord(r, k)));
   }
-  // Shewchuk's bound for one determinant is below 4ε (2D) / 8ε (3D) times its permanent; the
-  // sum of n terms adds at most 2nε·Σ|term|; the factor 2 covers the rounding of the bound
-  // itself, and the last term covers underflow.
-  const double eps = DBL_EPSILON / 2, n = static_cast<double>(facets.size());
-  const double bound = 2 * ((m.dim == 2 ? 4 : 8) * eps * permanents + 2 * n * eps * magnitudes) +
-                       64 * n * std::numeric_limits<double>::denorm_min();
+  // Without underflow, Shewchuk's bound for one determinant is below 4u (2D) / 8u (3D) times
+  // its permanent, and the sum of n terms adds at most 2nu * sum |term|. Underflow adds to each
+  // product an absolute error of at most eta = 2^-1075 (half the smallest subnormal); in 3D a
+  // 2x2 minor carries two such errors and is then multiplied by a difference of size at most
+  // `largest`, so one determinant gains at most 3 eta (2 largest + 1) (1 + 4u) and the sum
+  // n times that: 6 n denorm_min (largest + 1) bounds it (2D: fewer terms). The factor 2 covers
+  // the rounding of the bound itself (and of the permanents); proofs/mesh_certificate.md
+  // section 6 states it. A bound that overflows falls through to the exact sum.
+  const double u = DBL_EPSILON / 2, n = static_cast<double>(facets.size());
+  const double underflow = 16 * n * (largest + 1) * std::numeric_limits<double>::denorm_min();
+  const double bound = 2 * ((m.dim == 2 ? 4 : 8) * u * permanents + 2 * n * u * magnitudes + underflow);
   if (std::isfinite(bound) && std::abs(sum) > bound) return sum > 0 ? 1 : -1;
   mpq_class exact = 0;
   for (std::size_t f : facets) exact += facet_det<mpq_class>(m, set.facet(f), r, false);

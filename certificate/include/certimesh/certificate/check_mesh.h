@@ -35,7 +35,14 @@ struct Statistics {
   // With a domain: boundary vertices on domain segments/faces.
   std::size_t vertices_exactly_on_domain_boundary = 0;
   std::size_t vertices_in_rounding_box_only = 0;  // on it only within half an ulp per coordinate
-  double max_boundary_deviation = 0.0;            // approximate distance, for those vertices
+  double max_boundary_deviation = 0.0;            // distance to the segment/face, for those vertices
+  // With a 2D domain: the meshed area, the area of the domain as its segments bound it (the
+  // side the mesh takes), their difference computed exactly (then rounded) and the exact bound
+  // on it that the box-only vertices allow (proofs/mesh_certificate.md section 4).
+  double measure = 0.0;
+  double domain_measure = 0.0;
+  double measure_difference = 0.0;
+  double measure_difference_bound = 0.0;
 };
 
 struct Report {

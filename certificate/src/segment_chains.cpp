@@ -1,0 +1,107 @@
+// Condition 6d, second half (2D): how the mesh covers each domain segment. The chain of mesh
+// edges along a segment is either all boundary facets, oriented the same way (the segment
+// bounds the domain, which lies on one side of it), or all interior edges (a segment inside
+// the domain: a cut or an interface), and every boundary facet belongs to exactly one chain.
+// A segment's two sides lie in one face of the arrangement each, so a chain that switches from
+// boundary to interior, or a boundary facet on no chain, is a mesh boundary that leaves the
+// domain boundary through rounding slack (issue 12: a sub-ulp gap between two components).
+//
+// Then the mesh boundary is, as a 1-chain, the sum of the segment chains, and the meshed area
+// differs from the area of the domain chain (the segments with the side the mesh takes) by the
+// area between each chain and its segment: computed exactly, and bounded exactly by the
+// trapezoids between each chain edge and the segment's line. Both numbers are reported.
+#include <algorithm>
+#include <cmath>
+
+#include "certimesh/predicates/orient2d.h"
+#include "rational.h"
+#include "stages.h"
+
+namespace certimesh::certificate::detail {
+namespace {
+
+struct FacetKey {
+  Index lo, hi;
+  std::size_t facet;
+  friend bool operator<(const FacetKey& a, const FacetKey& b) { return a.lo != b.lo ? a.lo < b.lo : a.hi < b.hi; }
+};
+
+// +1 when u -> w is a boundary facet, -1 when w -> u is, 0 for an interior edge; the facet in `f`.
+int direction(const std::vector<FacetKey>& keys, const FacetSet& b, Index u, Index w, std::size_t& f) {
+  const auto it = std::lower_bound(keys.begin(), keys.end(), FacetKey{std::min(u, w), std::max(u, w), 0});
+  if (it == keys.end() || it->lo != std::min(u, w) || it->hi != std::max(u, w)) return 0;
+  f = it->facet;
+  return b.facet(f)[0] == u ? 1 : -1;
+}
+
+// The area between a chain (p_0 = a, ..., p_k = b, oriented as the mesh orients it) and its
+// segment, exactly, and the exact bound on it: per edge pq, the trapezoid between pq and the
+// line of the segment, |(q-p).u| (|u x (p-a)| + |u x (q-a)|) / (2|u|^2), u = b - a.
+struct Between { Q area = 0, bound = 0; };
+void add_between(const MeshView& m, const std::vector<Index>& chain, int dir, Between& out) {
+  const Vec a = point_of(m, chain.front()), u = minus(point_of(m, chain.back()), a);
+  const Q uu = dot(u, u);
+  bool all_on_line = true;
+  for (Index v : chain)
+    all_on_line = all_on_line && predicates::orient2d(m.p2(chain.front()), m.p2(chain.back()), m.p2(v)) == predicates::Sign::zero;
+  if (all_on_line) return;  // a degenerate polygon: area and bound are zero
+  Q area = 0;
+  for (std::size_t i = 0; i + 1 < chain.size(); ++i) {
+    const Vec p = minus(point_of(m, chain[i]), a), q = minus(point_of(m, chain[i + 1]), a);
+    area += cross2(p, q);
+    out.bound += abs(dot(minus(q, p), u)) * (abs(cross2(u, p)) + abs(cross2(u, q))) / (2 * uu);
+  }
+  out.area += dir * area / 2;  // the chain runs a -> b; the mesh's orientation is dir
+}
+
+}  // namespace
+
+Finding check_segment_chains(const MeshView& m, const FacetSet& b, const std::vector<SegmentChain>& chains,
+                             Statistics& stats) {
+  std::vector<FacetKey> keys;
+  keys.reserve(b.size());
+  for (std::size_t f = 0; f < b.size(); ++f) keys.push_back({std::min(b.facet(f)[0], b.facet(f)[1]), std::max(b.facet(f)[0], b.facet(f)[1]), f});
+  std::sort(keys.begin(), keys.end());
+  std::vector<std::uint32_t> chain_of(b.size(), UINT32_MAX);
+  Between between;
+  Q domain_area = 0;
+  for (const SegmentChain& c : chains) {
+    const auto& p = c.path;
+    int dir = 2;  // not yet known
+    for (std::size_t i = 0; i + 1 < p.size(); ++i) {
+      std::size_t f = SIZE_MAX;
+      const int d = direction(keys, b, p[i], p[i + 1], f);
+      if (dir != 2 && d != dir)
+        return finding(Defect::domain_boundary_not_covered, -1, c.segment, p[i],
+                       "domain segment " + std::to_string(c.segment) + " is bounded by the mesh along part of its length only "
+                       "(at mesh vertex " + std::to_string(p[i]) + " its mesh edges change from " +
+                           (dir == 0 ? "interior to boundary" : "boundary to interior or reverse") + ")");
+      dir = d;
+      if (d == 0) continue;
+      if (chain_of[f] != UINT32_MAX)
+        return finding(Defect::facet_off_domain_boundary, b.owner[f], c.segment, p[i],
+                       "boundary facet " + std::to_string(f) + " of element " + std::to_string(b.owner[f]) +
+                           " runs along two domain segments (" + std::to_string(chain_of[f]) + " and " + std::to_string(c.segment) + ")");
+      chain_of[f] = static_cast<std::uint32_t>(c.segment);
+    }
+    if (dir == 0) continue;
+    domain_area += dir * cross2(point_of(m, p.front()), point_of(m, p.back())) / 2;
+    add_between(m, p, dir, between);
+  }
+  for (std::size_t f = 0; f < b.size(); ++f)
+    if (chain_of[f] == UINT32_MAX)
+      return finding(Defect::facet_off_domain_boundary, b.owner[f], -1, b.facet(f)[0],
+                     "boundary facet " + std::to_string(f) + " of element " + std::to_string(b.owner[f]) +
+                         " is on no domain segment's chain of mesh edges: the mesh boundary leaves the domain boundary there");
+  stats.domain_measure = domain_area.get_d();
+  stats.measure = Q(domain_area + between.area).get_d();
+  stats.measure_difference = between.area.get_d();
+  stats.measure_difference_bound = between.bound.get_d();
+  if (abs(between.area) > between.bound)
+    return finding(Defect::facet_off_domain_boundary, -1, -1, -1,
+                   "the meshed area differs from the domain's by " + std::to_string(stats.measure_difference) +
+                       ", more than the rounding of its boundary vertices allows (" + std::to_string(stats.measure_difference_bound) + ")");
+  return {};
+}
+
+}  // namespace certimesh::certificate::detail
