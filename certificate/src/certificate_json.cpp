@@ -95,7 +95,9 @@ std::string certificate_json(const Report& report, const std::string& certimesh_
       {"measure", number(s.measure)},
       {"domain_measure", number(s.domain_measure)},
       {"measure_difference", number(s.measure_difference)},
-      {"measure_difference_bound", number(s.measure_difference_bound)}};
+      {"measure_difference_bound", number(s.measure_difference_bound)},
+      {"boundary_tolerance_absolute", number(s.boundary_tolerance.absolute)},
+      {"boundary_tolerance_ulps", number(s.boundary_tolerance.ulps)}};
   out += ",\n  \"statistics\": {";
   for (const auto& [key, value] : stats) out += std::string(key == stats[0].first ? "\n" : ",\n") + "    \"" + key + "\": " + value;
   return out + "\n  }\n}\n";

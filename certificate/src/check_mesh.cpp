@@ -16,7 +16,7 @@ detail::MeshView view_of(const io::MeshData& mesh) {
           cells.size() / static_cast<std::size_t>(dim + 1)};
 }
 
-Finding run_stages(const detail::MeshView& m, const io::MeshData* domain, Statistics& stats) {
+Finding run_stages(const detail::MeshView& m, const io::MeshData* domain, const CheckOptions& options, Statistics& stats) {
   std::vector<io::Index> lex_order;
   Finding f = detail::check_input(m, lex_order);
   if (f.defect != Defect::none) return f;
@@ -34,12 +34,12 @@ Finding run_stages(const detail::MeshView& m, const io::MeshData* domain, Statis
   if (f.defect != Defect::none) return f;
   f = detail::check_single_cover(m, boundary, comps);
   if (f.defect != Defect::none || domain == nullptr) return f;
-  return detail::check_domain(m, boundary, comps, lex_order, *domain, stats);
+  return detail::check_domain(m, boundary, comps, lex_order, *domain, options.boundary_tolerance, stats);
 }
 
 }  // namespace
 
-Report check_mesh(const io::MeshData& mesh, const io::MeshData* domain) {
+Report check_mesh(const io::MeshData& mesh, const io::MeshData* domain, const CheckOptions& options) {
   Report report;
   const detail::MeshView m = view_of(mesh);
   report.statistics.dimension = m.dim;
@@ -47,7 +47,7 @@ Report check_mesh(const io::MeshData& mesh, const io::MeshData* domain) {
   report.statistics.elements = m.element_count;
   report.mesh_sha256 = detail::mesh_sha256(mesh);
   try {
-    report.finding = run_stages(m, domain, report.statistics);
+    report.finding = run_stages(m, domain, options, report.statistics);
   } catch (const predicates::NonFiniteInput& e) {  // only a domain coordinate can get there
     report.finding = detail::finding(Defect::invalid_domain, -1, -1, -1,
                                      std::string("a predicate refused the input: ") + e.what());

@@ -1,17 +1,21 @@
 // Condition 6: the mesh tiles exactly its domain. Points on domain segments / faces follow
 // design decision 2: a mesh vertex is on a domain facet when the facet meets the vertex's
-// rounding box (the reals that round to it), decided exactly in rationals.
+// rounding box (the reals that round to it), or the box a tolerance allows, decided exactly
+// (on_simplex.h).
 #include <gmpxx.h>
 
 #include <algorithm>
 #include <array>
 #include <cmath>
 #include <limits>
+#include <cstdio>
 #include <numeric>
+#include <string>
 
 #include "certimesh/predicates/orient2d.h"
 #include "certimesh/predicates/orient3d.h"
 #include "close_pairs.h"
+#include "on_simplex.h"
 #include "rational.h"
 #include "stages.h"
 
@@ -23,101 +27,8 @@ using Edge = std::pair<Index, Index>;
 struct Domain {
   MeshView geo;     // coordinates only
   FacetSet facets;  // segments (2D) or triangles (3D), domain vertex ids
+  BoundaryTolerance tolerance;
 };
-
-// Half-way to the next double towards `toward`: the rounding box ends there.
-Q half_way(double x, double toward) {
-  const double y = std::nextafter(x, toward);
-  return std::isfinite(y) ? (Q(x) + Q(y)) / 2 : Q(x);
-}
-
-// Point x seen along coordinate axis k (3D: the other two coordinates, in order; 2D: x itself).
-predicates::Point2 drop_axis(const double* x, int k, int dim) {
-  return dim == 2 ? predicates::Point2{x[0], x[1]} : predicates::Point2{k == 0 ? x[1] : x[0], k == 2 ? x[1] : x[2]};
-}
-
-// Whether p lies exactly on the segment (s[2] null) or triangle `s`, by the exact predicates:
-// the common case (grid vertices, exact midpoints), so the rational box test runs only for the rest.
-bool lies_exactly_on(const std::array<const double*, 3>& s, int dim, const double* p) {
-  using namespace predicates;
-  if (s[2] == nullptr) {  // a segment: collinear in every coordinate plane, and within its box
-    for (int k = 0; k < dim; ++k)
-      if (std::min(s[0][k], s[1][k]) > p[k] || p[k] > std::max(s[0][k], s[1][k])) return false;
-    for (int k = 0; k < (dim == 2 ? 1 : 3); ++k)
-      if (orient2d(drop_axis(s[0], k, dim), drop_axis(s[1], k, dim), drop_axis(p, k, dim)) != Sign::zero) return false;
-    return true;
-  }
-  auto pt = [](const double* x) { return Point3{x[0], x[1], x[2]}; };
-  if (orient3d(pt(s[0]), pt(s[1]), pt(s[2]), pt(p)) != Sign::zero) return false;
-  for (int k = 0; k < 3; ++k) {  // coplanar: decide in a coordinate plane the triangle keeps its area in
-    const Sign t = orient2d(drop_axis(s[0], k, dim), drop_axis(s[1], k, dim), drop_axis(s[2], k, dim));
-    if (t == Sign::zero) continue;
-    for (int i = 0; i < 3; ++i)
-      if (orient2d(drop_axis(s[static_cast<std::size_t>(i)], k, dim), drop_axis(s[static_cast<std::size_t>((i + 1) % 3)], k, dim), drop_axis(p, k, dim)) == -t) return false;
-    return true;
-  }
-  return false;
-}
-
-// A cheap exact proof that p's rounding box misses the segment (2D) / triangle `s`: the box of
-// p's neighbouring doubles (it contains the rounding box) lies strictly on one side of the
-// facet's line / plane, or, in the plane, strictly outside one edge. Otherwise: rationals.
-bool box_certainly_misses(const std::array<const double*, 3>& s, int dim, const double* p) {
-  using namespace predicates;
-  std::array<std::array<double, 3>, 2> box{};  // lo, hi
-  for (int k = 0; k < dim; ++k) {
-    box[0][k] = std::nextafter(p[k], -HUGE_VAL), box[1][k] = std::nextafter(p[k], HUGE_VAL);
-    if (!std::isfinite(box[0][k]) || !std::isfinite(box[1][k]) || (dim == 3 && s[2] == nullptr)) return false;
-  }
-  auto all_corners = [&](int kx, int ky, int kz, Sign want, auto&& sign_at) {  // kz < 0: a 2D box
-    for (int b = 0; b < (kz < 0 ? 4 : 8); ++b)
-      if (sign_at(box[b & 1][kx], box[b >> 1 & 1][ky], kz < 0 ? 0.0 : box[b >> 2 & 1][kz]) != want) return false;
-    return true;
-  };
-  auto outside_an_edge = [&](int k, int n, Sign t) {  // projected along axis k; n edges
-    const int kx = dim == 2 || k != 0 ? 0 : 1, ky = dim == 2 || k == 2 ? 1 : 2;
-    for (int i = 0; i < n; ++i) {
-      const Point2 u = drop_axis(s[static_cast<std::size_t>(i)], k, dim), v = drop_axis(s[static_cast<std::size_t>((i + 1) % (n == 1 ? 2 : 3))], k, dim);
-      if (all_corners(kx, ky, -1, -t, [&](double x, double y, double) { return orient2d(u, v, {x, y}); })) return true;
-    }
-    return false;
-  };
-  if (dim == 2) return outside_an_edge(2, 1, Sign::negative) || outside_an_edge(2, 1, Sign::positive);
-  const Point3 a{s[0][0], s[0][1], s[0][2]}, b{s[1][0], s[1][1], s[1][2]}, c{s[2][0], s[2][1], s[2][2]};
-  for (Sign side : {Sign::negative, Sign::positive})
-    if (all_corners(0, 1, 2, side, [&](double x, double y, double z) { return orient3d(a, b, c, {x, y, z}); })) return true;
-  for (int k = 0; k < 3; ++k)
-    if (const Sign t = orient2d(drop_axis(s[0], k, dim), drop_axis(s[1], k, dim), drop_axis(s[2], k, dim)); t != Sign::zero) return outside_an_edge(k, 3, t);
-  return false;
-}
-
-// Whether the simplex `pts` (2 or 3 points) meets the rounding box of p. Separating axis
-// theorem, exact: the box's axes, the simplex's normal (2D segment, 3D triangle) and the
-// edge x axis cross products (3D).
-bool meets_box(const std::vector<Vec>& pts, int dim, const double* p) {
-  Vec lo{0, 0, 0}, hi{0, 0, 0};
-  const double inf = std::numeric_limits<double>::infinity();
-  for (int k = 0; k < dim; ++k) lo[k] = half_way(p[k], -inf), hi[k] = half_way(p[k], inf);
-  std::vector<Vec> axes;
-  for (int k = 0; k < dim; ++k) axes.push_back(Vec{Q(k == 0), Q(k == 1), Q(k == 2)});
-  std::vector<Vec> edges;
-  for (std::size_t i = 0; i + 1 < pts.size() + (pts.size() == 3); ++i)
-    edges.push_back(minus(pts[(i + 1) % pts.size()], pts[i]));
-  if (dim == 2) axes.push_back(Vec{-edges[0][1], edges[0][0], 0});
-  if (dim == 3 && pts.size() == 3) axes.push_back(cross(edges[0], edges[1]));
-  for (std::size_t e = 0; dim == 3 && e < edges.size(); ++e)
-    for (int k = 0; k < 3; ++k) axes.push_back(cross(edges[e], axes[static_cast<std::size_t>(k)]));
-  for (const Vec& a : axes) {
-    Q fmin = a[0] * pts[0][0] + a[1] * pts[0][1] + a[2] * pts[0][2], fmax = fmin, bmin = 0, bmax = 0;
-    for (const Vec& q : pts) {
-      const Q x = a[0] * q[0] + a[1] * q[1] + a[2] * q[2];
-      fmin = std::min(fmin, x), fmax = std::max(fmax, x);
-    }
-    for (int k = 0; k < dim; ++k) bmin += a[k] * (a[k] > 0 ? lo[k] : hi[k]), bmax += a[k] * (a[k] > 0 ? hi[k] : lo[k]);
-    if (fmax < bmin || bmax < fmin) return false;
-  }
-  return true;
-}
 
 std::vector<Vec> points_of(const MeshView& g, const Index* ids, int count) {
   std::vector<Vec> out;
@@ -196,7 +107,7 @@ std::vector<char> domain_vertices_in_mesh(const MeshView& m, const Domain& d) {
 std::vector<OnFacet> incidences(const MeshView& m, const Domain& d) {
   std::vector<Box> boxes;
   for (std::size_t f = 0; f < d.facets.size(); ++f) boxes.push_back(facet_box(d.geo, d.facets.facet(f), d.geo.dim));
-  for (Index v = 0; v < m.vertex_count; ++v) boxes.push_back(facet_box(m, &v, 1));
+  for (Index v = 0; v < m.vertex_count; ++v) boxes.push_back(accepted_bounds(m.xyz + static_cast<std::size_t>(v) * m.dim, m.dim, d.tolerance));
   const std::vector<char> pinned = domain_vertices_in_mesh(m, d);
   std::vector<OnFacet> out;
   const std::size_t facets = d.facets.size();
@@ -206,7 +117,7 @@ std::vector<OnFacet> incidences(const MeshView& m, const Domain& d) {
     const double* p = m.xyz + static_cast<std::size_t>(v) * m.dim;
     const auto s = corners(d.geo, d.facets.facet(i), m.dim);
     const bool exact = lies_exactly_on(s, m.dim, p);  // then its box meets it
-    if (exact || (!pinned[v] && !box_certainly_misses(s, m.dim, p) && meets_box(facet_points(d, i), m.dim, p)))
+    if (exact || (!pinned[v] && lies_on(s, m.dim, p, d.tolerance)))
       out.push_back({v, static_cast<std::uint32_t>(i), exact});
     return false;
   });
@@ -222,6 +133,39 @@ double deviation(const MeshView& m, Index v, const Domain& d, std::size_t f) {
   const Vec e = minus(p[1], p[0]), n = m.dim == 2 ? Vec{-e[1], e[0], 0} : cross(e, minus(p[2], p[0]));
   const Q along = dot(n, minus(point_of(m, v), p[0]));
   return sqrt_of(along * along / dot(n, n));
+}
+
+// Distance from mesh vertex v to the closed domain segment f (2D), or to the plane of domain
+// triangle f (3D: a lower bound on the distance to the triangle), for a refusal message.
+double distance_to(const MeshView& m, Index v, const Domain& d, std::size_t f) {
+  if (m.dim == 3) return deviation(m, v, d, f);
+  const std::vector<Vec> s = facet_points(d, f);
+  const Vec u = minus(s[1], s[0]), w = minus(point_of(m, v), s[0]);
+  Q t = dot(u, w) / dot(u, u);
+  t = t < 0 ? Q(0) : (t > 1 ? Q(1) : t);
+  const Vec gap = minus(w, Vec{t * u[0], t * u[1], 0});
+  return sqrt_of(dot(gap, gap));
+}
+
+// vertex_off_domain_boundary for v, naming the nearest domain facet and the distance to it.
+Finding vertex_off(const MeshView& m, Index v, const Domain& d) {
+  std::size_t nearest = 0;
+  double best = std::numeric_limits<double>::infinity();
+  for (std::size_t f = 0; f < d.facets.size(); ++f)
+    if (const double x = distance_to(m, v, d, f); x < best) best = x, nearest = f;
+  std::string at;
+  for (int k = 0; k < m.dim; ++k) {
+    char x[32];
+    std::snprintf(x, sizeof x, "%.17g", m.coord(v, k));
+    at += (k ? ", " : "(") + std::string(x);
+  }
+  char distance[32];
+  std::snprintf(distance, sizeof distance, "%.3g", best);
+  return finding(Defect::vertex_off_domain_boundary, -1, static_cast<std::int64_t>(nearest), v,
+                 "boundary vertex " + std::to_string(v) + " " + at + ") is on no domain " + (m.dim == 2 ? "segment" : "triangle") +
+                     ": the nearest, " + std::to_string(nearest) + ", is " + distance + " away" +
+                     (m.dim == 3 ? " (from its plane)" : "") +
+                     (d.tolerance.active() ? ", beyond the boundary tolerance" : "; the exact rule allows half an ulp per coordinate (see --boundary-tolerance)"));
 }
 
 // Incidences of every mesh vertex, and the first domain facet all of `count` vertices are on.
@@ -252,8 +196,7 @@ Finding boundary_on_domain(const MeshView& m, const FacetSet& b, const Domain& d
   verts.erase(std::unique(verts.begin(), verts.end()), verts.end());
   for (Index v : verts) {
     const auto r = on.range(v);
-    if (r.first == r.second)
-      return finding(Defect::vertex_off_domain_boundary, -1, -1, v, "boundary vertex " + std::to_string(v) + " is on no domain facet, not even within half an ulp");
+    if (r.first == r.second) return vertex_off(m, v, d);
     if (std::any_of(r.first, r.second, [](const OnFacet& o) { return o.exact; })) { ++stats.vertices_exactly_on_domain_boundary; continue; }
     ++stats.vertices_in_rounding_box_only;
     stats.max_boundary_deviation = std::max(stats.max_boundary_deviation, deviation(m, v, d, r.first->facet));
@@ -285,12 +228,11 @@ std::int64_t find_vertex(const MeshView& m, const std::vector<Index>& lex, const
 // segment ab (rounding-box rule), greedily towards b: success shows ab covered by mesh edges.
 // `path` receives the mesh vertices from a to b; `seen` (one stamp per vertex, `stamp` this
 // walk's) keeps each vertex once without a search.
-bool walk(const MeshView& m, const std::vector<Edge>& edges, const std::vector<Index>& lex, const double* a,
-          const double* b, std::vector<Index>& path, std::vector<std::uint32_t>& seen, std::uint32_t stamp) {
+bool walk(const MeshView& m, const std::vector<Edge>& edges, const std::vector<Index>& lex, const BoundaryTolerance& tolerance,
+          const double* a, const double* b, std::vector<Index>& path, std::vector<std::uint32_t>& seen, std::uint32_t stamp) {
   const std::int64_t start = find_vertex(m, lex, a), target = find_vertex(m, lex, b);
   path.clear();
   if (start < 0 || target < 0) return false;
-  const std::vector<Vec> seg = {point_of(a, m.dim), point_of(b, m.dim)};
   path.push_back(static_cast<Index>(start));
   seen[path[0]] = stamp;
   for (Index u = path[0]; u != target;) {
@@ -302,7 +244,7 @@ bool walk(const MeshView& m, const std::vector<Edge>& edges, const std::vector<I
       double dist = 0;  // max-norm: squares would overflow for huge coordinates
       for (int k = 0; k < m.dim; ++k) dist = std::max(dist, std::abs(p[k] - b[k]));
       if ((best < 0 || dist < best_distance) && seen[it->second] != stamp &&
-          (lies_exactly_on({a, b, nullptr}, m.dim, p) || (!box_certainly_misses({a, b, nullptr}, m.dim, p) && meets_box(seg, m.dim, p))))
+          lies_on({a, b, nullptr}, m.dim, p, tolerance))
         best = it->second, best_distance = dist;
     }
     if (best < 0) return false;
@@ -340,7 +282,7 @@ Finding coverage(const MeshView& m, const FacetSet& b, const Domain& d, const st
     std::vector<Edge> chain, edges_on_face, odd;
     std::vector<Index> path;
     for (int i = 0; i < (m.dim == 2 ? 1 : 3); ++i) {
-      if (!walk(m, edges, lex, d.geo.xyz + static_cast<std::size_t>(x[i]) * m.dim, d.geo.xyz + static_cast<std::size_t>(x[(i + 1) % m.dim]) * m.dim, path, seen, ++stamp))
+      if (!walk(m, edges, lex, d.tolerance, d.geo.xyz + static_cast<std::size_t>(x[i]) * m.dim, d.geo.xyz + static_cast<std::size_t>(x[(i + 1) % m.dim]) * m.dim, path, seen, ++stamp))
         return finding(Defect::domain_boundary_not_covered, -1, static_cast<std::int64_t>(f), -1,
                        "domain facet " + std::to_string(f) + ": its edge from domain vertex " + std::to_string(x[i]) + " to " +
                            std::to_string(x[(i + 1) % m.dim]) + " is not covered by mesh edges on it");
@@ -374,15 +316,16 @@ Finding holes_and_regions(const MeshView& m, const FacetSet& b, const Components
   for (std::size_t h = 0; h < data.hole_count(); ++h) {
     const double* p = data.holes.data() + h * static_cast<std::size_t>(m.dim);
     auto inside = [&](const Box& box) { return boxes_overlap(box, Box{{p[0], p[1], p[m.dim - 1]}, {p[0], p[1], p[m.dim - 1]}}, m.dim); };
+    // Only the facets of components whose box holds p can hold p or wind around it: one pass
+    // over those (not over every boundary facet for every hole point).
     bool covered = false;
-    for (std::size_t f = 0; f < b.size() && !covered; ++f) {
-      const Index* x = b.facet(f);
-      covered = inside(facet_box(m, x, m.dim)) && lies_exactly_on(corners(m, x, m.dim), m.dim, p);
-    }
     int w = 0;
     std::size_t innermost = SIZE_MAX;
     for (std::size_t c = 0; c < comps.facets.size() && !covered; ++c) {
-      const int wc = inside(comps.box[c]) ? winding_number(m, b, comps.facets[c], p) : 0;
+      if (!inside(comps.box[c])) continue;
+      for (std::size_t f : comps.facets[c])
+        if (!covered && inside(facet_box(m, b.facet(f), m.dim))) covered = lies_exactly_on(corners(m, b.facet(f), m.dim), m.dim, p);
+      const int wc = covered ? 0 : winding_number(m, b, comps.facets[c], p);
       w += wc;
       if (wc != 0 && (innermost == SIZE_MAX || comps.enclosed_by[c].size() > comps.enclosed_by[innermost].size())) innermost = c;
     }
@@ -401,8 +344,11 @@ Finding holes_and_regions(const MeshView& m, const FacetSet& b, const Components
 }  // namespace
 
 Finding check_domain(const MeshView& m, const FacetSet& boundary, const Components& comps,
-                     const std::vector<Index>& lex_order, const io::MeshData& domain, Statistics& stats) {
+                     const std::vector<Index>& lex_order, const io::MeshData& domain, const BoundaryTolerance& tolerance,
+                     Statistics& stats) {
   Domain d;
+  d.tolerance = tolerance;
+  stats.boundary_tolerance = tolerance;
   Finding f = load_domain(domain, m.dim, d);
   if (f.defect != Defect::none) return f;
   const OnDomain on{incidences(m, d)};

@@ -83,14 +83,23 @@ std::string facet_text(const MeshView& m, Index lo, const Record& r) {
 
 Index apex(const MeshView& m, const Record& r) { return m.cell(r.element())[r.corner()]; }
 
+// Two records of the group with the same apex (the same element listed twice), or -1: a sort
+// of the apexes, so that a facet in 40,000 elements costs n log n, not n^2.
+std::pair<std::size_t, std::size_t> same_apex(const MeshView& m, const Record* g, std::size_t n) {
+  std::vector<std::pair<Index, std::size_t>> apexes(n);
+  for (std::size_t a = 0; a < n; ++a) apexes[a] = {apex(m, g[a]), a};
+  std::sort(apexes.begin(), apexes.end());
+  for (std::size_t a = 1; a < n; ++a)
+    if (apexes[a].first == apexes[a - 1].first) return {apexes[a - 1].second, apexes[a].second};
+  return {SIZE_MAX, SIZE_MAX};
+}
+
 // One group of records naming the same facet.
 void judge_group(const MeshView& m, Index lo, const Record* g, std::size_t n, Pass& pass) {
-  for (std::size_t a = 0; a < n; ++a)
-    for (std::size_t b = a + 1; b < n; ++b)
-      if (apex(m, g[a]) == apex(m, g[b]) && pass.duplicate.defect == Defect::none)
-        pass.duplicate = finding(Defect::duplicate_element, g[b].element(), g[a].element(), -1,
-                                 "elements " + std::to_string(g[a].element()) + " and " +
-                                     std::to_string(g[b].element()) + " have the same vertices");
+  if (const auto [a, b] = same_apex(m, g, n); a != SIZE_MAX && pass.duplicate.defect == Defect::none)
+    pass.duplicate = finding(Defect::duplicate_element, g[b].element(), g[a].element(), -1,
+                             "elements " + std::to_string(g[a].element()) + " and " +
+                                 std::to_string(g[b].element()) + " have the same vertices");
   if (n > 2 && pass.non_manifold.defect == Defect::none)
     pass.non_manifold = finding(Defect::non_manifold_facet, g[2].element(), g[0].element(), lo,
                                 facet_text(m, lo, g[0]) + " is in " + std::to_string(n) +

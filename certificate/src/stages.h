@@ -63,7 +63,8 @@ Finding check_segment_chains(const MeshView& m, const FacetSet& boundary, const 
 /// Condition 6 (invalid_domain .. region_not_meshed, in the order of defect.h) and the
 /// statistics of boundary vertices on the domain boundary.
 Finding check_domain(const MeshView& m, const FacetSet& boundary, const Components& comps,
-                     const std::vector<Index>& lex_order, const io::MeshData& domain, Statistics& stats);
+                     const std::vector<Index>& lex_order, const io::MeshData& domain, const BoundaryTolerance& tolerance,
+                     Statistics& stats);
 
 /// Lower-case hex SHA-256 of the canonical binary form of the mesh (proofs/mesh_certificate.md).
 std::string mesh_sha256(const io::MeshData& mesh);

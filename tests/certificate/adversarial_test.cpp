@@ -69,6 +69,10 @@ TEST(CertificateAdversary, RoundingSlackMustNotJoinComponents) {
   const Report r = check_mesh(m, &d);
   EXPECT_FALSE(r.valid);
   EXPECT_EQ(defect_name(r.finding.defect), defect_name(Defect::facet_off_domain_boundary)) << r.finding.message;
+  // A boundary tolerance widens the rule for Steiner points, never for domain vertices.
+  CheckOptions loose;
+  loose.boundary_tolerance.absolute = 1e-6;
+  EXPECT_FALSE(check_mesh(m, &d, loose).valid);
 }
 
 // A sub-ulp gap between two segments that never touch: S = AB as above, and T from

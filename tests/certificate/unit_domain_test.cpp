@@ -75,6 +75,39 @@ TEST(CertificateDomain, RoundedVertexIsOnItsSegment) {
   EXPECT_EQ(expect_defect(rounded_split(off), d, Defect::vertex_off_domain_boundary).finding.vertex, 2);
 }
 
+// Meshes written by other tools: vertices a few ulps or 1e-15 off their segment are refused by
+// the exact rule (with the segment and the distance named) and accepted with a tolerance.
+TEST(CertificateDomain, BoundaryTolerance) {
+  MeshData d;
+  d.coordinates = {0, 0, 3, 0, 0, 1};
+  d.segments = {0, 1, 1, 2, 2, 0};
+  double y = 1.0 / 3.0;
+  for (int i = 0; i < 3; ++i) y = std::nextafter(y, 1.0);  // three ulps off
+  const MeshData three_ulps = rounded_split(y), gmsh = rounded_split(0.33333333333333);  // 14 digits
+  for (const MeshData* m : {&three_ulps, &gmsh}) {
+    const Report exact = expect_defect(*m, d, Defect::vertex_off_domain_boundary);
+    EXPECT_EQ(exact.finding.vertex, 2);
+    EXPECT_EQ(exact.finding.other, 1) << "the nearest segment, (3,0)-(0,1)";
+    EXPECT_NE(exact.finding.message.find("segment: the nearest, 1, is"), std::string::npos) << exact.finding.message;
+  }
+  CheckOptions ulps;
+  ulps.boundary_tolerance.ulps = 4;
+  EXPECT_TRUE(check_mesh(three_ulps, &d, ulps).valid);
+  EXPECT_FALSE(check_mesh(gmsh, &d, ulps).valid) << "3.3e-15 is more than 4 ulps";
+  CheckOptions absolute;
+  absolute.boundary_tolerance.absolute = 1e-12;
+  for (const MeshData* m : {&three_ulps, &gmsh}) {
+    const Report r = check_mesh(*m, &d, absolute);
+    EXPECT_TRUE(r.valid) << r.finding.message;
+    EXPECT_EQ(r.statistics.vertices_in_rounding_box_only, 1u);
+    EXPECT_GT(r.statistics.max_boundary_deviation, 0.0);
+    EXPECT_LT(r.statistics.max_boundary_deviation, 1e-14);
+    EXPECT_LE(std::abs(r.statistics.measure_difference), r.statistics.measure_difference_bound);
+  }
+  absolute.boundary_tolerance.absolute = 1e-16;
+  EXPECT_EQ(defect_name(check_mesh(gmsh, &d, absolute).finding.defect), defect_name(Defect::vertex_off_domain_boundary));
+}
+
 TEST(CertificateDomain, CutCornerIsOffTheDomain) {
   MeshData m;  // the square [0,2]^2 without the corner beyond (2,1)-(1,2)
   m.coordinates = {0, 0, 2, 0, 2, 1, 1, 2, 0, 2};

@@ -23,6 +23,19 @@ struct Finding {
   std::string message;        // one line for a person: what is wrong and where
 };
 
+/// How far from the domain boundary a mesh boundary vertex may lie. The default is design
+/// decision 2's exact rule: the domain segment / triangle must meet the vertex's rounding box
+/// (half an ulp per coordinate). Meshes written by other tools (Triangle's Steiner points a few
+/// 1e-17 off their segment, Gmsh's 14 digits) need more: with `absolute` > 0 a vertex is on a
+/// segment / triangle when each coordinate is within `absolute` of a point of it (max-norm);
+/// with `ulps` > 0.5, within that many ulps of its own coordinate. A mesh vertex with the
+/// coordinates of a domain vertex is on a domain simplex only exactly, whatever the tolerance.
+struct BoundaryTolerance {
+  double absolute = 0.0;
+  double ulps = 0.0;
+  bool active() const { return absolute > 0 || ulps > 0.5; }
+};
+
 struct Statistics {
   int dimension = 0;                 // 2 (triangles) or 3 (tetrahedra)
   std::size_t vertices = 0;
@@ -43,6 +56,11 @@ struct Statistics {
   double domain_measure = 0.0;
   double measure_difference = 0.0;
   double measure_difference_bound = 0.0;
+  BoundaryTolerance boundary_tolerance;  // the one the check used
+};
+
+struct CheckOptions {
+  BoundaryTolerance boundary_tolerance;
 };
 
 struct Report {
@@ -56,7 +74,7 @@ struct Report {
 /// ignored) against `domain` when non-null (2D: segments and holes of a .poly; 3D: a closed
 /// surface mesh, triangles, with optional holes). Never throws on bad geometry: every defect
 /// is a Finding.
-Report check_mesh(const io::MeshData& mesh, const io::MeshData* domain = nullptr);
+Report check_mesh(const io::MeshData& mesh, const io::MeshData* domain = nullptr, const CheckOptions& options = {});
 
 /// The JSON certificate: counts, worst quality, the mesh hash, the verdict and the certimesh
 /// version. Deterministic: same report, same bytes.

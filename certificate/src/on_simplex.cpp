@@ -1,0 +1,152 @@
+// Whether a mesh vertex lies on a domain segment / triangle (on_simplex.h): exactly, by the
+// predicates; certainly not, by orient signs at the corners of the box of neighbouring doubles;
+// otherwise by the separating axis theorem in rationals.
+#include "on_simplex.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <vector>
+
+#include "certimesh/predicates/orient2d.h"
+#include "certimesh/predicates/orient3d.h"
+#include "rational.h"
+
+namespace certimesh::certificate::detail {
+namespace {
+
+// Half-way to the next double towards `toward`: the rounding box ends there.
+Q half_way(double x, double toward) {
+  const double y = std::nextafter(x, toward);
+  return std::isfinite(y) ? (Q(x) + Q(y)) / 2 : Q(x);
+}
+
+// Point x seen along coordinate axis k (3D: the other two coordinates, in order; 2D: x itself).
+predicates::Point2 drop_axis(const double* x, int k, int dim) {
+  return dim == 2 ? predicates::Point2{x[0], x[1]} : predicates::Point2{k == 0 ? x[1] : x[0], k == 2 ? x[1] : x[2]};
+}
+
+}  // namespace
+
+// Whether p lies exactly on the segment (s[2] null) or triangle `s`, by the exact predicates:
+// the common case (grid vertices, exact midpoints), so the rational box test runs only for the rest.
+bool lies_exactly_on(const std::array<const double*, 3>& s, int dim, const double* p) {
+  using namespace predicates;
+  if (s[2] == nullptr) {  // a segment: collinear in every coordinate plane, and within its box
+    for (int k = 0; k < dim; ++k)
+      if (std::min(s[0][k], s[1][k]) > p[k] || p[k] > std::max(s[0][k], s[1][k])) return false;
+    for (int k = 0; k < (dim == 2 ? 1 : 3); ++k)
+      if (orient2d(drop_axis(s[0], k, dim), drop_axis(s[1], k, dim), drop_axis(p, k, dim)) != Sign::zero) return false;
+    return true;
+  }
+  auto pt = [](const double* x) { return Point3{x[0], x[1], x[2]}; };
+  if (orient3d(pt(s[0]), pt(s[1]), pt(s[2]), pt(p)) != Sign::zero) return false;
+  for (int k = 0; k < 3; ++k) {  // coplanar: decide in a coordinate plane the triangle keeps its area in
+    const Sign t = orient2d(drop_axis(s[0], k, dim), drop_axis(s[1], k, dim), drop_axis(s[2], k, dim));
+    if (t == Sign::zero) continue;
+    for (int i = 0; i < 3; ++i)
+      if (orient2d(drop_axis(s[static_cast<std::size_t>(i)], k, dim), drop_axis(s[static_cast<std::size_t>((i + 1) % 3)], k, dim), drop_axis(p, k, dim)) == -t) return false;
+    return true;
+  }
+  return false;
+}
+
+namespace {
+
+// A cheap exact proof that p's rounding box misses the segment (2D) / triangle `s`: the box of
+// p's neighbouring doubles (it contains the rounding box) lies strictly on one side of the
+// facet's line / plane, or, in the plane, strictly outside one edge. Otherwise: rationals.
+bool box_certainly_misses(const std::array<const double*, 3>& s, int dim, const double* p) {
+  using namespace predicates;
+  std::array<std::array<double, 3>, 2> box{};  // lo, hi
+  for (int k = 0; k < dim; ++k) {
+    box[0][k] = std::nextafter(p[k], -HUGE_VAL), box[1][k] = std::nextafter(p[k], HUGE_VAL);
+    if (!std::isfinite(box[0][k]) || !std::isfinite(box[1][k]) || (dim == 3 && s[2] == nullptr)) return false;
+  }
+  auto all_corners = [&](int kx, int ky, int kz, Sign want, auto&& sign_at) {  // kz < 0: a 2D box
+    for (int b = 0; b < (kz < 0 ? 4 : 8); ++b)
+      if (sign_at(box[b & 1][kx], box[b >> 1 & 1][ky], kz < 0 ? 0.0 : box[b >> 2 & 1][kz]) != want) return false;
+    return true;
+  };
+  auto outside_an_edge = [&](int k, int n, Sign t) {  // projected along axis k; n edges
+    const int kx = dim == 2 || k != 0 ? 0 : 1, ky = dim == 2 || k == 2 ? 1 : 2;
+    for (int i = 0; i < n; ++i) {
+      const Point2 u = drop_axis(s[static_cast<std::size_t>(i)], k, dim), v = drop_axis(s[static_cast<std::size_t>((i + 1) % (n == 1 ? 2 : 3))], k, dim);
+      if (all_corners(kx, ky, -1, -t, [&](double x, double y, double) { return orient2d(u, v, {x, y}); })) return true;
+    }
+    return false;
+  };
+  if (dim == 2) return outside_an_edge(2, 1, Sign::negative) || outside_an_edge(2, 1, Sign::positive);
+  const Point3 a{s[0][0], s[0][1], s[0][2]}, b{s[1][0], s[1][1], s[1][2]}, c{s[2][0], s[2][1], s[2][2]};
+  for (Sign side : {Sign::negative, Sign::positive})
+    if (all_corners(0, 1, 2, side, [&](double x, double y, double z) { return orient3d(a, b, c, {x, y, z}); })) return true;
+  for (int k = 0; k < 3; ++k)
+    if (const Sign t = orient2d(drop_axis(s[0], k, dim), drop_axis(s[1], k, dim), drop_axis(s[2], k, dim)); t != Sign::zero) return outside_an_edge(k, 3, t);
+  return false;
+}
+
+// The box of reals accepted for p: its rounding box, widened to `ulps` ulps (the distance to
+// the neighbouring double) and to `absolute` per coordinate when a tolerance is given.
+void accepted_box(const double* p, int dim, const BoundaryTolerance& tol, Vec& lo, Vec& hi) {
+  const double inf = std::numeric_limits<double>::infinity();
+  for (int k = 0; k < dim; ++k) {
+    lo[k] = half_way(p[k], -inf), hi[k] = half_way(p[k], inf);
+    const Q x = p[k];
+    if (tol.ulps > 0.5) {
+      lo[k] = std::min<Q>(lo[k], x - (x - lo[k]) * 2 * Q(tol.ulps));
+      hi[k] = std::max<Q>(hi[k], x + (hi[k] - x) * 2 * Q(tol.ulps));
+    }
+    if (tol.absolute > 0) lo[k] = std::min<Q>(lo[k], x - Q(tol.absolute)), hi[k] = std::max<Q>(hi[k], x + Q(tol.absolute));
+  }
+}
+
+// Whether the simplex `pts` (2 or 3 points) meets p's accepted box. Separating axis theorem,
+// exact: the box's axes, the simplex's normal (2D segment, 3D triangle) and the edge x axis
+// cross products (3D).
+bool meets_box(const std::vector<Vec>& pts, int dim, const double* p, const BoundaryTolerance& tol) {
+  Vec lo{0, 0, 0}, hi{0, 0, 0};
+  accepted_box(p, dim, tol, lo, hi);
+  std::vector<Vec> axes;
+  for (int k = 0; k < dim; ++k) axes.push_back(Vec{Q(k == 0), Q(k == 1), Q(k == 2)});
+  std::vector<Vec> edges;
+  for (std::size_t i = 0; i + 1 < pts.size() + (pts.size() == 3); ++i)
+    edges.push_back(minus(pts[(i + 1) % pts.size()], pts[i]));
+  if (dim == 2) axes.push_back(Vec{-edges[0][1], edges[0][0], 0});
+  if (dim == 3 && pts.size() == 3) axes.push_back(cross(edges[0], edges[1]));
+  for (std::size_t e = 0; dim == 3 && e < edges.size(); ++e)
+    for (int k = 0; k < 3; ++k) axes.push_back(cross(edges[e], axes[static_cast<std::size_t>(k)]));
+  for (const Vec& a : axes) {
+    Q fmin = a[0] * pts[0][0] + a[1] * pts[0][1] + a[2] * pts[0][2], fmax = fmin, bmin = 0, bmax = 0;
+    for (const Vec& q : pts) {
+      const Q x = a[0] * q[0] + a[1] * q[1] + a[2] * q[2];
+      fmin = std::min(fmin, x), fmax = std::max(fmax, x);
+    }
+    for (int k = 0; k < dim; ++k) bmin += a[k] * (a[k] > 0 ? lo[k] : hi[k]), bmax += a[k] * (a[k] > 0 ? hi[k] : lo[k]);
+    if (fmax < bmin || bmax < fmin) return false;
+  }
+  return true;
+}
+
+
+}  // namespace
+
+bool lies_on(const std::array<const double*, 3>& s, int dim, const double* p, const BoundaryTolerance& tol) {
+  if (lies_exactly_on(s, dim, p)) return true;
+  if (!tol.active() && box_certainly_misses(s, dim, p)) return false;
+  std::vector<Vec> pts;
+  for (const double* x : s)
+    if (x != nullptr) pts.push_back(point_of(x, dim));
+  return meets_box(pts, dim, p, tol);
+}
+
+Box accepted_bounds(const double* p, int dim, const BoundaryTolerance& tol) {
+  Box b;
+  for (int k = 0; k < dim; ++k) {
+    const double step = std::max(std::abs(p[k] - std::nextafter(p[k], -HUGE_VAL)), std::abs(std::nextafter(p[k], HUGE_VAL) - p[k]));
+    const double reach = std::max(tol.absolute, (std::max(tol.ulps, 0.5) + 1) * step);  // outward, generously
+    b.lo[k] = std::nextafter(p[k] - reach, -HUGE_VAL), b.hi[k] = std::nextafter(p[k] + reach, HUGE_VAL);
+  }
+  return b;
+}
+
+}  // namespace certimesh::certificate::detail
