@@ -4,6 +4,9 @@
 #include <gtest/gtest.h>
 
 #include <cfenv>
+#include <functional>
+#include <iterator>
+#include <thread>
 
 #if defined(__SSE2__) && (defined(__x86_64__) || defined(__i386__))
 #include <xmmintrin.h>
@@ -48,60 +51,60 @@ void call_every_exact_stage() {
   (void)pr::insphere({1, 0, 0}, {0, 1, 0}, {-1, 0, 0}, {0, 0, 1}, {0, -1, 0});
 }
 
+// The exact stages check the mode once per thread, at its first exact stage, and the mode
+// itself is per thread: each case runs in a thread of its own, which sets the mode, calls
+// `query` and reports whether it threw FpEnvironmentError.
+template <class SetMode, class Query>
+bool refused_in_fresh_thread(SetMode set_mode, Query query) {
+  bool refused = false;
+  std::thread([&] {
+    set_mode();
+    try {
+      query();
+    } catch (const pr::FpEnvironmentError&) {
+      refused = true;
+    }
+  }).join();
+  return refused;
+}
+
 // In round-to-nearest the exact stages answer (the degenerate signs are zero) ...
 TEST(FpEnvironment, ExactStagesAnswerInRoundToNearest) {
-  EXPECT_NO_THROW(call_every_exact_stage());
+  EXPECT_FALSE(refused_in_fresh_thread([] {}, call_every_exact_stage));
   EXPECT_EQ(pr::orient2d({0, 0}, {1, 1}, {2, 2}), pr::Sign::zero);
 }
 
-// ... and refuse every directed mode, whose rounding errors the proofs do not cover.
+// ... and each of them refuses every directed mode, whose rounding errors the proofs do
+// not cover.
 TEST(FpEnvironment, ExactStagesRefuseDirectedRounding) {
-  for (const int mode : {FE_UPWARD, FE_DOWNWARD, FE_TOWARDZERO}) {
-    ASSERT_EQ(std::fesetround(mode), 0);
-    EXPECT_THROW((void)pr::orient2d({0, 0}, {1, 1}, {2, 2}), pr::FpEnvironmentError);
-    EXPECT_THROW((void)pr::orient3d({0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {1, 1, 0}),
-                 pr::FpEnvironmentError);
-    EXPECT_THROW((void)pr::incircle({1, 0}, {0, 1}, {-1, 0}, {0, -1}), pr::FpEnvironmentError);
-    EXPECT_THROW((void)pr::insphere({1, 0, 0}, {0, 1, 0}, {-1, 0, 0}, {0, 0, 1}, {0, -1, 0}),
-                 pr::FpEnvironmentError);
-    std::fesetround(FE_TONEAREST);
-  }
-  EXPECT_NO_THROW(call_every_exact_stage());
+  const std::function<void()> stages[] = {
+      [] { (void)pr::orient2d({0, 0}, {1, 1}, {2, 2}); },
+      [] { (void)pr::orient3d({0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {1, 1, 0}); },
+      [] { (void)pr::incircle({1, 0}, {0, 1}, {-1, 0}, {0, -1}); },
+      [] { (void)pr::insphere({1, 0, 0}, {0, 1, 0}, {-1, 0, 0}, {0, 0, 1}, {0, -1, 0}); }};
+  for (const int mode : {FE_UPWARD, FE_DOWNWARD, FE_TOWARDZERO})
+    for (std::size_t i = 0; i < std::size(stages); ++i)
+      EXPECT_TRUE(refused_in_fresh_thread([mode] { std::fesetround(mode); }, stages[i]))
+          << "mode " << mode << ", predicate " << i;
 }
 
 #if defined(CERTIMESH_TEST_HAS_MXCSR)
 // Flush-to-zero and denormals-are-zero (what crtfastmath.o sets for a -ffast-math link)
 // break the underflow terms of the bounds: refused, and reported by the probe.
 TEST(FpEnvironment, ExactStagesRefuseFlushToZero) {
-  const unsigned saved = _mm_getcsr();
   for (const unsigned bits : {0x8000u, 0x0040u}) {  // FTZ, DAZ
-    _mm_setcsr(saved | bits);
-    const pr::FpEnvironmentReport r = pr::probe_fp_environment();
-    bool threw = false;
-    try {
-      call_every_exact_stage();
-    } catch (const pr::FpEnvironmentError&) {
-      threw = true;
-    }
-    _mm_setcsr(saved);
-    EXPECT_TRUE(threw) << "MXCSR bit " << bits;
-    EXPECT_FALSE(r.subnormals_kept);
-    EXPECT_FALSE(r.ok());
+    const auto set = [bits] { _mm_setcsr(_mm_getcsr() | bits); };
+    EXPECT_TRUE(refused_in_fresh_thread(set, call_every_exact_stage)) << "MXCSR bit " << bits;
+    bool kept = true;
+    refused_in_fresh_thread(set, [&kept] { kept = pr::probe_fp_environment().subnormals_kept; });
+    EXPECT_FALSE(kept) << "MXCSR bit " << bits;
   }
 }
 
 // Rounding set through MXCSR alone (as _MM_SET_ROUNDING_MODE does) is seen too.
 TEST(FpEnvironment, ExactStagesSeeMxcsrRounding) {
-  const unsigned saved = _mm_getcsr();
-  _mm_setcsr((saved & ~0x6000u) | 0x2000u);  // round down, x87 control word untouched
-  bool threw = false;
-  try {
-    (void)pr::orient2d({0, 0}, {1, 1}, {2, 2});
-  } catch (const pr::FpEnvironmentError&) {
-    threw = true;
-  }
-  _mm_setcsr(saved);
-  EXPECT_TRUE(threw);
+  const auto round_down = [] { _mm_setcsr((_mm_getcsr() & ~0x6000u) | 0x2000u); };
+  EXPECT_TRUE(refused_in_fresh_thread(round_down, call_every_exact_stage));
 }
 #endif
 

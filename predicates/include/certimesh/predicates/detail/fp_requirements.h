@@ -28,8 +28,8 @@
 // __attribute__((target("fma"))) in a translation unit compiled without FMA flags sees
 // none of the macros, and GCC then inlines and contracts the filters into it (measured: 5
 // FMAs in orient3d). Define CERTIMESH_FILTERS_ALWAYS_OUT_OF_LINE, or compile such files
-// with -ffp-contract=off. The rounding mode is checked at run time where it is cheap: the
-// exact stages (out of line) throw FpEnvironmentError unless the mode is round-to-nearest
+// with -ffp-contract=off. The rounding mode is checked at run time where it is cheap: a
+// thread's first exact stage throws FpEnvironmentError unless the mode is round-to-nearest
 // without flush-to-zero (fp_environment.h); the inline filters do not check.
 #pragma once
 
