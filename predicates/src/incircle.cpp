@@ -4,6 +4,7 @@
 #include <array>
 #include <cmath>
 
+#include "certimesh/predicates/fp_environment.h"
 #include "certimesh/predicates/non_finite_input.h"
 #include "exact_range.h"
 #include "expansion_determinants.h"
@@ -129,6 +130,7 @@ Sign compensated_sign(const std::array<double, 6>& h, const std::array<double, 6
 Sign incircle_exact_stage(const Point2& a, const Point2& b, const Point2& c, const Point2& d) {
   const std::array<double, 8> raw{a.x, a.y, b.x, b.y, c.x, c.y, d.x, d.y};
   if (!all_finite(raw)) throw NonFiniteInput("incircle");
+  require_proven_fp_mode("incircle");
   std::array<double, 6> diffs, tails;
   bool exact_diffs = true;
   for (std::size_t i = 0; i < 6; ++i) {

@@ -2,6 +2,7 @@
 
 #include <array>
 
+#include "certimesh/predicates/fp_environment.h"
 #include "certimesh/predicates/non_finite_input.h"
 #include "exact_range.h"
 #include "expansion_determinants.h"
@@ -56,6 +57,7 @@ Sign insphere_exact_stage(const Point3& a, const Point3& b, const Point3& c, con
   const std::array<double, 15> raw{a.x, a.y, a.z, b.x, b.y, b.z, c.x, c.y,
                                    c.z, d.x, d.y, d.z, e.x, e.y, e.z};
   if (!all_finite(raw)) throw NonFiniteInput("insphere");
+  require_proven_fp_mode("insphere");
   std::array<double, 12> diffs;
   bool exact_diffs = true;
   for (std::size_t i = 0; i < 12; ++i) {

@@ -4,6 +4,7 @@
 #include <array>
 #include <cmath>
 
+#include "certimesh/predicates/fp_environment.h"
 #include "certimesh/predicates/non_finite_input.h"
 #include "exact_range.h"
 #include "expansion_determinants.h"
@@ -44,6 +45,7 @@ Sign orient2d_second_stage(double acx, double acx_t, double bcx, double bcx_t, d
 Sign orient2d_exact_stage(const Point2& a, const Point2& b, const Point2& c) {
   const std::array<double, 6> raw{a.x, a.y, b.x, b.y, c.x, c.y};
   if (!all_finite(raw)) throw NonFiniteInput("orient2d");
+  require_proven_fp_mode("orient2d");
   double acx, acx_tail, bcx, bcx_tail, acy, acy_tail, bcy, bcy_tail;
   two_diff(a.x, c.x, acx, acx_tail);
   two_diff(b.x, c.x, bcx, bcx_tail);

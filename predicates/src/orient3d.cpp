@@ -4,6 +4,7 @@
 #include <array>
 #include <cmath>
 
+#include "certimesh/predicates/fp_environment.h"
 #include "certimesh/predicates/non_finite_input.h"
 #include "exact_range.h"
 #include "expansion_determinants.h"
@@ -112,6 +113,7 @@ Sign second_stage(const std::array<double, 9>& h, const std::array<double, 9>& t
 Sign orient3d_exact_stage(const Point3& a, const Point3& b, const Point3& c, const Point3& d) {
   const std::array<double, 12> raw{a.x, a.y, a.z, b.x, b.y, b.z, c.x, c.y, c.z, d.x, d.y, d.z};
   if (!all_finite(raw)) throw NonFiniteInput("orient3d");
+  require_proven_fp_mode("orient3d");
   std::array<double, 9> diffs, tails;
   bool exact_diffs = true;
   for (std::size_t i = 0; i < 9; ++i) {

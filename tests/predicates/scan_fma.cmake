@@ -1,6 +1,12 @@
-# cmake -DLIBRARY=<path> -P scan_fma.cmake
+# cmake -DLIBRARY=<path> [-DMIN_INSTRUCTIONS=n] [-DEXPECT_FMA=ON] -P scan_fma.cmake
 # Fails when the disassembly of LIBRARY contains a fused multiply-add: contraction would
-# break the error-free transformations and the proven filter bounds.
+# break the error-free transformations and the proven filter bounds. Also used on the
+# object code a consumer inlines (tests/packaging/fp_consumer), which is smaller
+# (MIN_INSTRUCTIONS), and on a canary that must contain one (EXPECT_FMA), so that a clean
+# scan cannot come from a pattern this toolchain's objdump never prints.
+if(NOT DEFINED MIN_INSTRUCTIONS)
+  set(MIN_INSTRUCTIONS 100)
+endif()
 if(NOT LIBRARY OR NOT EXISTS "${LIBRARY}")
   message(FATAL_ERROR "scan_fma: LIBRARY='${LIBRARY}' does not exist")
 endif()
@@ -15,10 +21,17 @@ string(REGEX MATCHALL "[^\n]*\t(vfmadd|vfmsub|vfnmadd|vfnmsub|fmadd|fmsub|fnmadd
 # A disassembly without any instruction would make the scan vacuous.
 string(REGEX MATCHALL "\n[ \t]*[0-9a-f]+:\t" insns "${disasm}")
 list(LENGTH insns ninsn)
-if(ninsn LESS 100)
+if(ninsn LESS MIN_INSTRUCTIONS)
   message(FATAL_ERROR "scan_fma: only ${ninsn} instructions disassembled from ${LIBRARY}")
 endif()
 list(LENGTH hits nhits)
+if(EXPECT_FMA)
+  if(nhits EQUAL 0)
+    message(FATAL_ERROR "scan_fma: no FMA found in ${LIBRARY}, which must contain one")
+  endif()
+  message(STATUS "scan_fma: ${nhits} FMA instruction(s) in ${LIBRARY}, as expected")
+  return()
+endif()
 if(nhits GREATER 0)
   list(SUBLIST hits 0 20 shown)
   string(REPLACE ";" "\n" shown "${shown}")

@@ -3,8 +3,22 @@
 #pragma once
 
 #include <string>
+#include <string_view>
 
 namespace certimesh::cli {
+
+/// The extensions each command accepts, space-separated, as the help and the errors print them.
+inline constexpr const char* kMeshOutputExtensions = ".mesh .msh .vtu .node .ele";
+inline constexpr const char* kMeshInputExtensions = ".node .ele .face .poly .mesh .msh .vtu";
+
+/// `certimesh COMMAND --help`: the usage of COMMAND, every option with its default; empty
+/// for an unknown command.
+std::string command_help(std::string_view command);
+
+/// True when `path`'s extension is one of `supported`; otherwise prints
+/// `error: PATH: unsupported output extension '.x' (supported: ...)` and returns false. The
+/// commands call it before any work, so a wrong name costs nothing and writes nothing.
+bool output_extension_supported(const std::string& path, std::string_view supported);
 
 enum class BatchMode { exact, filter, sos };
 

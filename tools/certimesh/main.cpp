@@ -1,4 +1,5 @@
-// certimesh: the command-line tool. Subcommands: demo, predicates. See --help.
+// certimesh: the command-line tool. Subcommands: demo, predicates, convert, check, mesh,
+// domain. See --help, and COMMAND --help for one command's options (help.cpp).
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -40,7 +41,7 @@ constexpr const char* kHelp =
     "  domain SCRIPT -o OUT.poly\n"
     "                       constructive geometry: rectangles, discs and polygons combined\n"
     "                       by union, difference, intersection (docs/domains.md)\n"
-    "  --help, -h           this text\n"
+    "  --help, -h           this text; COMMAND --help: that command's options and defaults\n"
     "  --version            the version\n"
     "\n"
     "predicates input, one query per line (numbers: decimal or C99 hex float, e.g. 0x1.8p-3,\n"
@@ -120,6 +121,15 @@ int parse_and_run_mesh(int argc, char** argv) {
   return certimesh::cli::run_mesh(options);
 }
 
+// `certimesh COMMAND ... --help ...`: anywhere after the command, as most tools accept it.
+bool asks_for_help(int argc, char** argv) {
+  for (int i = 2; i < argc; ++i) {
+    const std::string_view arg = argv[i];
+    if (arg == "--help" || arg == "-h") return true;
+  }
+  return false;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -130,6 +140,10 @@ int main(int argc, char** argv) {
   const std::string_view command = argv[1];
   if (command == "--help" || command == "-h" || command == "help") {
     std::fputs(kHelp, stdout);
+    return 0;
+  }
+  if (const std::string help = certimesh::cli::command_help(command); !help.empty() && asks_for_help(argc, argv)) {
+    std::fputs(help.c_str(), stdout);
     return 0;
   }
   if (command == "--version") {

@@ -1,8 +1,11 @@
 // `certimesh convert` and `certimesh check`: file formats and the certificate, for a person.
+#include <algorithm>
 #include <cstdio>
 #include <exception>
+#include <filesystem>
 #include <optional>
 #include <string>
+#include <system_error>
 
 #include "certimesh/certificate/check_mesh.h"
 #include "certimesh/io/format_error.h"
@@ -46,9 +49,36 @@ void print_statistics(const certificate::Statistics& s) {
   }
 }
 
+// A .node mesh has its elements in the .ele beside it; without one the reader would see a
+// point set, and the checker would report "no elements" instead of the missing file.
+bool elements_file_missing(const std::string& mesh) {
+  const std::filesystem::path path(mesh);
+  if (path.extension() != ".node") return false;
+  const std::filesystem::path ele = std::filesystem::path(path).replace_extension(".ele");
+  std::error_code ec;
+  if (std::filesystem::exists(ele, ec)) return false;
+  std::fprintf(stderr, "error: %s: no such file (the elements of %s are read from it)\n",
+               ele.string().c_str(), mesh.c_str());
+  return true;
+}
+
 }  // namespace
 
+bool output_extension_supported(const std::string& path, std::string_view supported) {
+  const std::string ext = std::filesystem::path(path).extension().string();
+  // Whole words of `supported` only: ".me" must not match inside ".mesh".
+  for (std::string_view rest = supported; !rest.empty();) {
+    const std::size_t end = std::min(rest.find(' '), rest.size());
+    if (!ext.empty() && rest.substr(0, end) == ext) return true;
+    rest.remove_prefix(std::min(end + 1, rest.size()));
+  }
+  std::fprintf(stderr, "error: %s: unsupported output extension '%s' (supported: %.*s)\n",
+               path.c_str(), ext.c_str(), static_cast<int>(supported.size()), supported.data());
+  return false;
+}
+
 int run_convert(const std::string& input, const std::string& output) {
+  if (!output_extension_supported(output, kMeshInputExtensions)) return 2;
   const std::optional<io::MeshData> mesh = read_or_report(input);
   if (!mesh) return 2;
   try {
@@ -61,6 +91,7 @@ int run_convert(const std::string& input, const std::string& output) {
 }
 
 int run_check(const CheckOptions& options) {
+  if (elements_file_missing(options.mesh)) return 2;
   const std::optional<io::MeshData> mesh = read_or_report(options.mesh);
   if (!mesh) return 2;
   std::optional<io::MeshData> domain;

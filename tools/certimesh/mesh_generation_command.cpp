@@ -108,6 +108,7 @@ void write_outputs(const MeshOptions& options, const io::MeshData& mesh, const i
 }  // namespace
 
 int run_mesh(const MeshOptions& options) {
+  if (!output_extension_supported(options.output, kMeshOutputExtensions)) return 2;
   generators::MeshDomainOptions2 mesh_options;
   mesh_options.algorithm = options.delaunay ? generators::MeshAlgorithm2::delaunay
                                             : generators::MeshAlgorithm2::advancing_front;

@@ -4,7 +4,8 @@
 // comparison false, so they come out `uncertain` too.
 //
 // The evaluation order written here is the one the Gappa scripts model: change one and
-// the other together.
+// the other together. Each body starts with CERTIMESH_FILTER_FP_STRICT, and a consumer whose
+// flags could still rewrite them calls the kernel-compiled copies (fp_requirements.h).
 #pragma once
 
 #include <algorithm>
@@ -32,6 +33,7 @@ inline FilteredSign certify(bool in_range, double det, double error_bound) noexc
 // The additive underflow bound covers the absolute error of products that underflow; an
 // overflow leaves an infinity or NaN in det or in the bound, and every comparison false.
 inline FilteredSign orient2d_filter(const Point2& a, const Point2& b, const Point2& c) noexcept {
+  CERTIMESH_FILTER_FP_STRICT
   namespace k = filter_constants;
   const double dl = (a.x - c.x) * (b.y - c.y);
   const double dr = (a.y - c.y) * (b.x - c.x);
@@ -42,6 +44,7 @@ inline FilteredSign orient2d_filter(const Point2& a, const Point2& b, const Poin
 
 inline FilteredSign orient3d_filter(const Point3& a, const Point3& b, const Point3& c,
                                     const Point3& d) noexcept {
+  CERTIMESH_FILTER_FP_STRICT
   namespace k = filter_constants;
   const double adx = a.x - d.x, bdx = b.x - d.x, cdx = c.x - d.x;
   const double ady = a.y - d.y, bdy = b.y - d.y, cdy = c.y - d.y;
@@ -59,6 +62,7 @@ inline FilteredSign orient3d_filter(const Point3& a, const Point3& b, const Poin
 
 inline FilteredSign incircle_filter(const Point2& a, const Point2& b, const Point2& c,
                                     const Point2& d) noexcept {
+  CERTIMESH_FILTER_FP_STRICT
   namespace k = filter_constants;
   const double adx = a.x - d.x, bdx = b.x - d.x, cdx = c.x - d.x;
   const double ady = a.y - d.y, bdy = b.y - d.y, cdy = c.y - d.y;
@@ -77,6 +81,7 @@ inline FilteredSign incircle_filter(const Point2& a, const Point2& b, const Poin
 
 inline FilteredSign insphere_filter(const Point3& a, const Point3& b, const Point3& c,
                                     const Point3& d, const Point3& e) noexcept {
+  CERTIMESH_FILTER_FP_STRICT
   namespace k = filter_constants;
   const double aex = a.x - e.x, bex = b.x - e.x, cex = c.x - e.x, dex = d.x - e.x;
   const double aey = a.y - e.y, bey = b.y - e.y, cey = c.y - e.y, dey = d.y - e.y;

@@ -1,0 +1,144 @@
+// `certimesh COMMAND --help`: each subcommand's usage, every option with its default. The
+// defaults are read from the option structs (cli.h), so the text cannot drift from them.
+#include <cstdio>
+#include <string>
+#include <string_view>
+
+#include "cli.h"
+
+namespace certimesh::cli {
+
+namespace {
+
+std::string format(const char* fmt, double value) {
+  char buffer[64];
+  std::snprintf(buffer, sizeof buffer, fmt, value);
+  return buffer;
+}
+
+std::string mesh_help() {
+  const MeshOptions d;
+  return "usage: certimesh mesh DOMAIN -o OUT [options]\n"
+         "\n"
+         "Meshes a 2D domain with triangles, certifies the mesh against the domain with the\n"
+         "independent checker, and writes it only if the certificate holds.\n"
+         "\n"
+         "  DOMAIN               a .poly file, or builtin:plate, builtin:square, builtin:two-holes\n"
+         "  -o, --output OUT     the mesh (required); format by extension: " +
+         std::string(kMeshOutputExtensions) +
+         "\n"
+         "  --size H             largest edge length (default: " +
+         (d.size > 0 ? format("%g", d.size) : std::string("automatic, from the boundary")) +
+         ")\n"
+         "  --gamma G            growth factor of the automatic size, >= 1 (default: " +
+         format("%g", d.gamma) +
+         ")\n"
+         "  --algorithm A        front (advancing front) or delaunay (default: " +
+         (d.delaunay ? "delaunay" : "front") +
+         ")\n"
+         "  --certificate C.json also write the certificate (default: not written)\n"
+         "  --svg PICTURE.svg    also write a picture of the mesh (default: not written)\n"
+         "  --save-domain D.poly also write the domain, for `certimesh check --domain`\n"
+         "                       (default: not written)\n"
+         "  --no-improve         skip the quality improvement (default: improve " +
+         (d.improve ? "on" : "off") +
+         ")\n"
+         "  --quiet              no progress on a terminal, only the summary (default: " +
+         (d.quiet ? "on" : "off") +
+         ")\n"
+         "  -h, --help           this text\n"
+         "\n"
+         "exit status: 0 written; 1 invalid domain; 2 usage error or unreadable input;\n"
+         "3 internal error (the mesh failed its certificate; nothing written).\n";
+}
+
+std::string check_help() {
+  return "usage: certimesh check MESH [--domain DOMAIN] [--certificate OUT.json]\n"
+         "\n"
+         "Certifies MESH exactly: oriented elements, conforming facets, an embedded boundary,\n"
+         "a single cover. A .node MESH reads its elements from the .ele beside it.\n"
+         "\n"
+         "  MESH                 " +
+         std::string(kMeshInputExtensions) +
+         "\n"
+         "  --domain DOMAIN      also check that MESH tiles exactly DOMAIN (.poly in 2D, a\n"
+         "                       closed surface mesh in 3D) (default: no domain)\n"
+         "  --certificate OUT.json  write the certificate as JSON (default: not written)\n"
+         "  -h, --help           this text\n"
+         "\n"
+         "exit status: 0 valid; 1 invalid (the first defect named); 2 usage error or\n"
+         "unreadable input (a missing file is named).\n";
+}
+
+std::string convert_help() {
+  return "usage: certimesh convert IN OUT\n"
+         "\n"
+         "Converts a mesh between formats, each chosen by its file's extension:\n"
+         "  IN, OUT              " +
+         std::string(kMeshInputExtensions) +
+         "\n"
+         "                       (.node/.ele/.face/.poly: Triangle, TetGen; .mesh: Medit;\n"
+         "                       .msh: Gmsh 4.1 ASCII; .vtu: VTK XML, for ParaView)\n"
+         "  -h, --help           this text\n"
+         "\n"
+         "exit status: 0 written; 2 usage error, unsupported extension, unreadable IN or\n"
+         "unwritable OUT (nothing written).\n";
+}
+
+std::string predicates_help() {
+  const BatchOptions d;
+  const char* mode = d.mode == BatchMode::exact ? "exact" : d.mode == BatchMode::filter ? "filter" : "sos";
+  return std::string("usage: certimesh predicates [--mode exact|filter|sos] [--line-buffered]\n"
+                     "\n"
+                     "Batch predicates: one query per stdin line, one answer per stdout line\n"
+                     "(the query syntax is in `certimesh --help`).\n"
+                     "\n"
+                     "  --mode M             exact, filter or sos; also --mode=M (default: ") +
+         mode +
+         ")\n"
+         "  --line-buffered      flush after every answer, for co-processes (default: " +
+         (d.line_buffered ? "on" : "off") +
+         ")\n"
+         "  -h, --help           this text\n"
+         "\n"
+         "exit status: 0 every line answered; 1 some line rejected; 2 usage error.\n";
+}
+
+std::string domain_help() {
+  return "usage: certimesh domain SCRIPT -o OUT.poly\n"
+         "\n"
+         "Constructive geometry: rectangles, discs and polygons combined by union,\n"
+         "difference and intersection (docs/domains.md), written as a .poly domain.\n"
+         "\n"
+         "  SCRIPT               the domain script\n"
+         "  -o OUT.poly          the domain (required)\n"
+         "  -h, --help           this text\n"
+         "\n"
+         "exit status: 0 written; 1 bad script or invalid domain; 2 usage error, unreadable\n"
+         "script or unwritable output.\n";
+}
+
+std::string demo_help() {
+  return "usage: certimesh demo\n"
+         "\n"
+         "Naive floating point against certimesh on the classroom robustness examples; every\n"
+         "answer is re-checked with GMP. No options.\n"
+         "\n"
+         "  -h, --help           this text\n"
+         "\n"
+         "exit status: 0 every certimesh answer agrees with GMP; 1 a disagreement.\n";
+}
+
+}  // namespace
+
+std::string command_help(std::string_view command) {
+  if (command == "mesh") return mesh_help();
+  if (command == "check") return check_help();
+  if (command == "convert") return convert_help();
+  if (command == "predicates") return predicates_help();
+  if (command == "domain") return domain_help();
+  if (command == "demo") return demo_help();
+  return {};
+}
+
+}  // namespace certimesh::cli
