@@ -2,6 +2,8 @@
 // everything the user sees is rendered here.
 #pragma once
 
+#include "certimesh/certificate/check_mesh.h"
+
 #include <string>
 #include <string_view>
 
@@ -40,9 +42,15 @@ struct CheckOptions {
   std::string mesh;
   std::string domain;       // empty: no domain
   std::string certificate;  // empty: no JSON certificate written
+  certificate::BoundaryTolerance boundary_tolerance;  // default: the exact rounding-box rule
 };
 
-/// `certimesh check MESH [--domain D] [--certificate OUT.json]`: the independent certificate.
+/// Reads `--boundary-tolerance`'s value: a positive distance ("1e-12") or a count of ulps
+/// ("4ulp", "4ulps"). False for anything else.
+bool parse_boundary_tolerance(std::string_view text, certificate::BoundaryTolerance& out);
+
+/// `certimesh check MESH [--domain D] [--certificate OUT.json] [--boundary-tolerance D]`: the
+/// independent certificate.
 /// Returns 0 valid, 1 invalid (first offending element or facet named), 2 unreadable input.
 int run_check(const CheckOptions& options);
 

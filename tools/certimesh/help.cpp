@@ -54,6 +54,7 @@ std::string mesh_help() {
 
 std::string check_help() {
   return "usage: certimesh check MESH [--domain DOMAIN] [--certificate OUT.json]\n"
+         "                       [--boundary-tolerance D]\n"
          "\n"
          "Certifies MESH exactly: oriented elements, conforming facets, an embedded boundary,\n"
          "a single cover. A .node MESH reads its elements from the .ele beside it.\n"
@@ -64,6 +65,11 @@ std::string check_help() {
          "  --domain DOMAIN      also check that MESH tiles exactly DOMAIN (.poly in 2D, a\n"
          "                       closed surface mesh in 3D) (default: no domain)\n"
          "  --certificate OUT.json  write the certificate as JSON (default: not written)\n"
+         "  --boundary-tolerance D  accept mesh boundary vertices within D of their domain\n"
+         "                       segment / triangle in each coordinate (D a distance, e.g.\n"
+         "                       1e-12, or a count of ulps, e.g. 4ulp), as meshes written by\n"
+         "                       Triangle or Gmsh need; domain vertices stay exact (default:\n"
+         "                       the exact rule, half an ulp per coordinate)\n"
          "  -h, --help           this text\n"
          "\n"
          "exit status: 0 valid; 1 invalid (the first defect named); 2 usage error or\n"

@@ -28,7 +28,7 @@ constexpr const char* kHelp =
     "  convert IN OUT       convert a mesh between formats, chosen by extension:\n"
     "                       .node/.ele/.face/.poly (Triangle, TetGen), .mesh (Medit),\n"
     "                       .msh (Gmsh 4.1 ASCII), .vtu (VTK XML, for ParaView)\n"
-    "  check MESH [--domain DOMAIN] [--certificate OUT.json]\n"
+    "  check MESH [--domain DOMAIN] [--certificate OUT.json] [--boundary-tolerance D]\n"
     "                       certify MESH exactly: oriented elements, conforming facets, an\n"
     "                       embedded boundary, a single cover; with DOMAIN (.poly in 2D, a\n"
     "                       closed surface mesh in 3D) also that MESH tiles exactly DOMAIN\n"
@@ -194,6 +194,9 @@ int main(int argc, char** argv) {
         options.domain = argv[++i];
       } else if (arg == "--certificate" && i + 1 < argc) {
         options.certificate = argv[++i];
+      } else if (arg == "--boundary-tolerance" && i + 1 < argc) {
+        if (!certimesh::cli::parse_boundary_tolerance(argv[++i], options.boundary_tolerance))
+          return usage_error("check: --boundary-tolerance takes a positive distance or a count of ulps (4ulp), got '%s'", argv[i]);
       } else if (!arg.starts_with("--") && options.mesh.empty()) {
         options.mesh = argv[i];
       } else {

@@ -1,6 +1,8 @@
 // `certimesh convert` and `certimesh check`: file formats and the certificate, for a person.
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <exception>
 #include <filesystem>
 #include <optional>
@@ -42,10 +44,19 @@ void print_statistics(const certificate::Statistics& s) {
                 static_cast<long long>(s.worst_element));
   }
   if (s.vertices_exactly_on_domain_boundary + s.vertices_in_rounding_box_only > 0) {
-    std::printf("boundary vertices on the domain boundary: %zu exactly, %zu within half an ulp "
+    const bool tolerant = s.boundary_tolerance.active();
+    std::printf("boundary vertices on the domain boundary: %zu exactly, %zu within %s "
                 "(largest deviation %.3g)\n",
                 s.vertices_exactly_on_domain_boundary, s.vertices_in_rounding_box_only,
-                s.max_boundary_deviation);
+                tolerant ? "the boundary tolerance" : "half an ulp", s.max_boundary_deviation);
+    if (s.dimension == 2 && s.domain_measure != 0)  // computed: the check reached the segment chains
+      std::printf("area %.17g, the domain's %.17g: difference %.3g, at most %.3g by the boundary "
+                  "vertices' deviations\n", s.measure, s.domain_measure, s.measure_difference,
+                  s.measure_difference_bound);
+    if (tolerant && s.vertices_in_rounding_box_only > 0)
+      std::printf("the mesh tiles exactly the %s through its own boundary vertices, which lie "
+                  "within %.3g of the domain's boundary\n",
+                  s.dimension == 2 ? "polygon" : "polyhedron", s.max_boundary_deviation);
   }
 }
 
@@ -63,6 +74,16 @@ bool elements_file_missing(const std::string& mesh) {
 }
 
 }  // namespace
+
+bool parse_boundary_tolerance(std::string_view text, certificate::BoundaryTolerance& out) {
+  const bool ulps = text.ends_with("ulp") || text.ends_with("ulps");
+  const std::string number(text.substr(0, ulps ? text.rfind("ulp") : text.size()));
+  char* end = nullptr;
+  const double value = std::strtod(number.c_str(), &end);
+  if (number.empty() || end != number.c_str() + number.size() || !std::isfinite(value) || !(value > 0)) return false;
+  (ulps ? out.ulps : out.absolute) = value;
+  return true;
+}
 
 bool output_extension_supported(const std::string& path, std::string_view supported) {
   const std::string ext = std::filesystem::path(path).extension().string();
@@ -101,7 +122,9 @@ int run_check(const CheckOptions& options) {
   }
   certificate::Report report;
   try {  // bad geometry is a Finding; only a mesh too large to check, or memory, throws
-    report = certificate::check_mesh(*mesh, domain ? &*domain : nullptr);
+    certificate::CheckOptions check_options;
+    check_options.boundary_tolerance = options.boundary_tolerance;
+    report = certificate::check_mesh(*mesh, domain ? &*domain : nullptr, check_options);
   } catch (const std::exception& e) {
     std::fprintf(stderr, "error: %s: %s\n", options.mesh.c_str(), e.what());
     return 2;

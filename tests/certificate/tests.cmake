@@ -1,0 +1,7 @@
+# Meshes written by Gmsh, certified by the CLI with and without --boundary-tolerance
+# (peer_meshes_test.py; skipped, exit 77, when gmsh is absent).
+find_program(CERTIMESH_CERT_PYTHON NAMES python3)
+add_test(NAME certificate.peer_meshes_gmsh
+         COMMAND ${CERTIMESH_CERT_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/peer_meshes_test.py $<TARGET_FILE:certimesh>
+                 ${CMAKE_CURRENT_BINARY_DIR}/peer_meshes)
+set_tests_properties(certificate.peer_meshes_gmsh PROPERTIES SKIP_RETURN_CODE 77 TIMEOUT 120 LABELS "certificate;interop")
