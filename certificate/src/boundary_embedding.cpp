@@ -10,6 +10,7 @@
 #include "certimesh/predicates/intersection/triangle_triangle_3d.h"
 #include "close_pairs.h"
 #include "stages.h"
+#include "sweep_2d.h"
 
 namespace certimesh::certificate::detail {
 
@@ -89,26 +90,38 @@ std::int64_t t_junction_vertex(const MeshView& m, const Index* f, const Index* g
 
 }  // namespace
 
+Finding contact_of(const MeshView& m, const FacetSet& set, std::size_t i, std::size_t j, Defect touching, Defect crossing,
+                   const std::string& what) {
+  if (!facets_meet(m, set.facet(i), set.facet(j))) return {};
+  const std::int64_t v = t_junction_vertex(m, set.facet(i), set.facet(j));
+  if (v < 0)
+    return finding(crossing, set.owner[i], set.owner[j], -1,
+                   what + "s " + std::to_string(i) + " and " + std::to_string(j) + " intersect beyond their shared vertices");
+  const std::size_t host = !std::count(set.facet(i), set.facet(i) + m.dim, static_cast<Index>(v)) ? i : j;
+  const std::size_t guest = host == i ? j : i;
+  return finding(touching, set.owner[host], set.owner[guest], v,
+                 "vertex " + std::to_string(v) + " lies on " + what + " " + std::to_string(host) + " without being one of its vertices");
+}
+
+// 2D: the plane sweep, O(n log n) in the worst case. 3D: the box grid (its worst case, many
+// facets whose boxes overlap, is stated in proofs/mesh_certificate.md section 6); a touching
+// pair is reported before a crossing one.
 Finding first_contact(const MeshView& m, const FacetSet& set, Defect touching, Defect crossing,
                       const std::string& what) {
+  if (m.dim == 2) {
+    std::vector<SweepAnswer> none;
+    return sweep_2d(m, set, touching, crossing, what, {}, none);
+  }
   std::vector<Box> boxes(set.size());
   for (std::size_t f = 0; f < set.size(); ++f) boxes[f] = facet_box(m, set.facet(f), m.dim);
   Finding crossing_found;
   BoxGrid(boxes, m.dim).any_pair([&](std::size_t i, std::size_t j) {
-    if (!facets_meet(m, set.facet(i), set.facet(j))) return false;
-    const std::int64_t v = t_junction_vertex(m, set.facet(i), set.facet(j));
-    const std::size_t host = v >= 0 && !std::count(set.facet(i), set.facet(i) + m.dim, static_cast<Index>(v)) ? i : j;
-    const std::size_t guest = host == i ? j : i;
-    if (v >= 0) {
-      crossing_found = finding(touching, set.owner[host], set.owner[guest], v,
-                               "vertex " + std::to_string(v) + " lies on " + what + " " + std::to_string(host) +
-                                   " without being one of its vertices");
+    Finding c = contact_of(m, set, i, j, touching, crossing, what);
+    if (c.defect == touching) {
+      crossing_found = std::move(c);
       return true;
     }
-    if (crossing_found.defect == Defect::none)
-      crossing_found = finding(crossing, set.owner[i], set.owner[j], -1,
-                               what + "s " + std::to_string(i) + " and " + std::to_string(j) +
-                                   " intersect beyond their shared vertices");
+    if (crossing_found.defect == Defect::none) crossing_found = std::move(c);
     return false;
   });
   return crossing_found;

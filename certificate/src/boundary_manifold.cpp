@@ -125,6 +125,15 @@ Finding check_boundary_manifold(const MeshView& m, const FacetSet& b, Components
     for (int k = 0; k < m.dim; ++k)
       comps.box[c].lo[k] = std::min(comps.box[c].lo[k], fb.lo[k]), comps.box[c].hi[k] = std::max(comps.box[c].hi[k], fb.hi[k]);
   }
+  comps.of_facet.assign(b.size(), 0);
+  for (std::size_t c = 0; c < comps.facets.size(); ++c)
+    for (std::size_t facet : comps.facets[c]) {
+      comps.of_facet[facet] = c;
+      const Index v = b.facet(facet)[0];  // 2D: the lowest, then leftmost vertex (sweep_2d's order)
+      const Index& best = comps.vertex[c];
+      if (m.dim == 2 && (m.coord(v, 1) < m.coord(best, 1) || (m.coord(v, 1) == m.coord(best, 1) && m.coord(v, 0) < m.coord(best, 0))))
+        comps.vertex[c] = v;
+    }
   for (const auto& c : comps.facets) comps.measure_sign.push_back(enclosed_measure_sign(m, b, c));
   return {};
 }

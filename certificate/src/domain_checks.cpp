@@ -18,6 +18,7 @@
 #include "on_simplex.h"
 #include "rational.h"
 #include "stages.h"
+#include "sweep_2d.h"
 
 namespace certimesh::certificate::detail {
 namespace {
@@ -308,16 +309,49 @@ Finding coverage(const MeshView& m, const FacetSet& b, const Domain& d, const st
   return m.dim == 2 ? check_segment_chains(m, b, chains, stats) : Finding{};
 }
 
-// hole_covered, then region_not_meshed: each hole point strictly outside the mesh (W = 0, off
-// the boundary), and each cavity component of the mesh boundary the innermost component
-// around some hole point.
-Finding holes_and_regions(const MeshView& m, const FacetSet& b, const Components& comps, const io::MeshData& data) {
+// A hole point covered or a cavity without one, reported (after the per-dimension passes).
+Finding hole_covered(std::size_t h) {
+  return finding(Defect::hole_covered, -1, static_cast<std::int64_t>(h), -1, "hole point " + std::to_string(h) + " is covered by the mesh");
+}
+Finding cavities_need_holes(const FacetSet& b, const Components& comps, const std::vector<char>& has_hole) {
+  for (std::size_t c = 0; c < comps.facets.size(); ++c)
+    if (comps.measure_sign[c] < 0 && !has_hole[c])
+      return finding(Defect::region_not_meshed, b.owner[comps.facets[c][0]], -1, comps.vertex[c],
+                     "the region inside the boundary component through vertex " + std::to_string(comps.vertex[c]) +
+                         " is not meshed and holds no hole point");
+  return {};
+}
+
+// 2D, one sweep for all hole points: a hole point on a boundary edge or at a mesh vertex, or
+// with W != 0 just left of it, is covered; otherwise the first edge its leftward ray hits
+// bounds its face: a cavity component (the face is its inside) or an island, whose
+// surrounding cavity single_cover_2d found (`around`).
+Finding holes_and_regions_2d(const MeshView& m, const FacetSet& b, const Components& comps, const std::vector<Index>& lex,
+                             const io::MeshData& data) {
+  std::vector<std::array<double, 2>> at(data.hole_count());
+  for (std::size_t h = 0; h < at.size(); ++h) at[h] = {data.holes[2 * h], data.holes[2 * h + 1]};
+  std::vector<SweepAnswer> answers;
+  if (Finding f = sweep_2d(m, b, Defect::t_junction, Defect::boundary_intersection, "boundary edge", at, answers); f.defect != Defect::none)
+    return f;
+  std::vector<char> has_hole(comps.facets.size(), 0);
+  for (std::size_t h = 0; h < at.size(); ++h) {
+    if (answers[h].on_facet || answers[h].winding != 0 || find_vertex(m, lex, at[h].data()) >= 0) return hole_covered(h);
+    if (answers[h].left_facet < 0) continue;  // the unbounded face
+    const std::size_t hit = comps.of_facet[static_cast<std::size_t>(answers[h].left_facet)];
+    const std::int64_t bounding = comps.measure_sign[hit] < 0 ? static_cast<std::int64_t>(hit) : comps.around[hit];
+    if (bounding >= 0) has_hole[static_cast<std::size_t>(bounding)] = 1;
+  }
+  return cavities_need_holes(b, comps, has_hole);
+}
+
+// 3D: each hole point strictly outside the mesh (W = 0, off the boundary), and each cavity
+// component of the mesh boundary the innermost component around some hole point. Only the
+// facets of components whose box holds p can hold p or wind around it.
+Finding holes_and_regions_3d(const MeshView& m, const FacetSet& b, const Components& comps, const io::MeshData& data) {
   std::vector<char> has_hole(comps.facets.size(), 0);
   for (std::size_t h = 0; h < data.hole_count(); ++h) {
     const double* p = data.holes.data() + h * static_cast<std::size_t>(m.dim);
     auto inside = [&](const Box& box) { return boxes_overlap(box, Box{{p[0], p[1], p[m.dim - 1]}, {p[0], p[1], p[m.dim - 1]}}, m.dim); };
-    // Only the facets of components whose box holds p can hold p or wind around it: one pass
-    // over those (not over every boundary facet for every hole point).
     bool covered = false;
     int w = 0;
     std::size_t innermost = SIZE_MAX;
@@ -329,16 +363,10 @@ Finding holes_and_regions(const MeshView& m, const FacetSet& b, const Components
       w += wc;
       if (wc != 0 && (innermost == SIZE_MAX || comps.enclosed_by[c].size() > comps.enclosed_by[innermost].size())) innermost = c;
     }
-    if (covered || w != 0)
-      return finding(Defect::hole_covered, -1, static_cast<std::int64_t>(h), -1, "hole point " + std::to_string(h) + " is covered by the mesh");
+    if (covered || w != 0) return hole_covered(h);
     if (innermost != SIZE_MAX) has_hole[innermost] = 1;
   }
-  for (std::size_t c = 0; c < comps.facets.size(); ++c)
-    if (comps.measure_sign[c] < 0 && !has_hole[c])
-      return finding(Defect::region_not_meshed, b.owner[comps.facets[c][0]], -1, comps.vertex[c],
-                     "the region inside the boundary component through vertex " + std::to_string(comps.vertex[c]) +
-                         " is not meshed and holds no hole point");
-  return {};
+  return cavities_need_holes(b, comps, has_hole);
 }
 
 }  // namespace
@@ -354,7 +382,8 @@ Finding check_domain(const MeshView& m, const FacetSet& boundary, const Componen
   const OnDomain on{incidences(m, d)};
   f = boundary_on_domain(m, boundary, d, on, stats);
   if (f.defect == Defect::none) f = coverage(m, boundary, d, lex_order, on, stats);
-  if (f.defect == Defect::none) f = holes_and_regions(m, boundary, comps, domain);
+  if (f.defect == Defect::none)
+    f = m.dim == 2 ? holes_and_regions_2d(m, boundary, comps, lex_order, domain) : holes_and_regions_3d(m, boundary, comps, domain);
   return f;
 }
 

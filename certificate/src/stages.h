@@ -27,7 +27,12 @@ struct Components {
   std::vector<Index> vertex;
   std::vector<Box> box;
   std::vector<int> measure_sign;  // +1 outer, -1 cavity
-  std::vector<std::vector<std::size_t>> enclosed_by;  // components with winding != 0 at vertex
+  std::vector<std::vector<std::size_t>> enclosed_by;  // 3D: components with winding != 0 at vertex
+  // 2D (filled by check_single_cover's sweep): `vertex` is the lowest, then leftmost vertex;
+  // of each facet its component; of each outer component (an island of the mesh), the cavity
+  // component that bounds the unmeshed face around it (-1: the unbounded face).
+  std::vector<std::size_t> of_facet;
+  std::vector<std::int64_t> around;
 };
 
 /// Condition 4, first half (non_manifold_boundary), and the components.
@@ -39,6 +44,11 @@ Finding check_boundary_embedding(const MeshView& m, const FacetSet& boundary);
 /// The first pair of facets of `set` meeting beyond shared vertices, exactly: `touching` when
 /// a vertex of one lies on the other, else `crossing` (condition 4, and the domain's check).
 Finding first_contact(const MeshView& m, const FacetSet& set, Defect touching, Defect crossing, const std::string& what);
+
+/// Whether facets i and j of `set` meet beyond their shared vertices, as a Finding (none if
+/// not): `touching` when a vertex of one lies on the other, else `crossing`. Exact.
+Finding contact_of(const MeshView& m, const FacetSet& set, std::size_t i, std::size_t j, Defect touching, Defect crossing,
+                   const std::string& what);
 
 /// Condition 5 (multiple_cover): winding numbers of the components at each other's vertices.
 Finding check_single_cover(const MeshView& m, const FacetSet& boundary, Components& comps);

@@ -2,6 +2,8 @@
 // component encloses, and winding numbers of components around points off them.
 #include <gmpxx.h>
 
+#include <algorithm>
+#include <array>
 #include <cfloat>
 #include <cmath>
 #include <limits>
@@ -9,6 +11,7 @@
 #include "certimesh/predicates/orient2d.h"
 #include "certimesh/predicates/orient3d.h"
 #include "stages.h"
+#include "sweep_2d.h"
 
 namespace certimesh::certificate::detail {
 namespace {
@@ -100,11 +103,52 @@ int winding_number(const MeshView& m, const FacetSet& b, const std::vector<std::
   return m.dim == 2 ? winding_2d(m, b, c, p) : winding_3d(m, b, c, p);
 }
 
+namespace {
+
+Finding cover_defect(const FacetSet& b, const Components& comps, std::size_t c, int others) {
+  const int inside = others + comps.measure_sign[c];
+  if (others >= 0 && others <= 1 && inside >= 0 && inside <= 1) return {};
+  const Index v = comps.vertex[c];
+  return finding(Defect::multiple_cover, b.owner[comps.facets[c][0]], -1, v,
+                 "next to the boundary component through vertex " + std::to_string(v) +
+                     " the elements cover the plane/space " + std::to_string(std::max(others, inside)) +
+                     " times (winding numbers " + std::to_string(others) + " and " + std::to_string(inside) + ")");
+}
+
+// 2D: one sweep answers W just left of every component's lowest-leftmost vertex, where the
+// component itself contributes nothing (it lies above and to the right), so W there is
+// W_others; and the first facet left of it, whose component bounds the face around it.
+// An island's ray can only hit a component whose lowest-leftmost vertex comes earlier in
+// that order, so resolving `around` in that order needs no recursion.
+Finding single_cover_2d(const MeshView& m, const FacetSet& b, Components& comps) {
+  const std::size_t n = comps.facets.size();
+  std::vector<std::array<double, 2>> at(n);
+  for (std::size_t c = 0; c < n; ++c) at[c] = {m.coord(comps.vertex[c], 0), m.coord(comps.vertex[c], 1)};
+  std::vector<SweepAnswer> answers;
+  Finding f = sweep_2d(m, b, Defect::t_junction, Defect::boundary_intersection, "boundary edge", at, answers);
+  if (f.defect != Defect::none) return f;
+  std::vector<std::size_t> order(n);
+  for (std::size_t c = 0; c < n; ++c) order[c] = c;
+  std::sort(order.begin(), order.end(), [&](std::size_t x, std::size_t y) { return at[x][1] != at[y][1] ? at[x][1] < at[y][1] : at[x][0] < at[y][0]; });
+  comps.around.assign(n, -1);
+  for (std::size_t c : order) {
+    if (f = cover_defect(b, comps, c, answers[c].winding); f.defect != Defect::none) return f;
+    if (answers[c].left_facet < 0) continue;
+    const std::size_t hit = comps.of_facet[static_cast<std::size_t>(answers[c].left_facet)];
+    comps.around[c] = comps.measure_sign[hit] < 0 ? static_cast<std::int64_t>(hit) : comps.around[hit];
+  }
+  return {};
+}
+
+}  // namespace
+
 // With every element positive and every interior facet paired, the number of elements over a
 // generic point is the winding number W of the boundary around it, so W >= 0. Next to a
 // component C, W is W_others(v) on one side and W_others(v) + sign(C) on the other (v a vertex
-// of C), and both sides must be 0 or 1.
+// of C), and both sides must be 0 or 1. 2D: a plane sweep, O(B log B) whatever the nesting;
+// 3D: per component, the components whose box holds its vertex (O(k B) in the worst case).
 Finding check_single_cover(const MeshView& m, const FacetSet& b, Components& comps) {
+  if (m.dim == 2) return single_cover_2d(m, b, comps);
   const std::size_t n = comps.facets.size();
   comps.enclosed_by.assign(n, {});
   for (std::size_t c = 0; c < n; ++c) {
@@ -116,12 +160,7 @@ Finding check_single_cover(const MeshView& m, const FacetSet& b, Components& com
       if (w != 0) comps.enclosed_by[c].push_back(o);
       others += w;
     }
-    const int inside = others + comps.measure_sign[c];
-    if (others < 0 || others > 1 || inside < 0 || inside > 1)
-      return finding(Defect::multiple_cover, b.owner[comps.facets[c][0]], -1, v,
-                     "next to the boundary component through vertex " + std::to_string(v) +
-                         " the elements cover the plane/space " + std::to_string(std::max(others, inside)) +
-                         " times (winding numbers " + std::to_string(others) + " and " + std::to_string(inside) + ")");
+    if (Finding f = cover_defect(b, comps, c, others); f.defect != Defect::none) return f;
   }
   return {};
 }

@@ -1,0 +1,204 @@
+// The 2D plane sweep (sweep_2d.h). Events in lexicographic (y, x) order: at each point, the
+// segments ending there leave the status, those starting there enter it, then the queries
+// there are answered. The status is a red-black tree (GNU pb_ds) ordered left to right along
+// the sweep line, each node carrying the sum of its subtree's weights (+1 for a segment
+// oriented downward, -1 upward, 0 horizontal): the signed crossings of a leftward ray are a
+// prefix sum, found in one descent.
+//
+// Why the order is consistent: until the first contact, the segments in the status are
+// pairwise disjoint apart from shared endpoints, and two such segments that both cross the
+// sweep line keep their left-to-right order; the order is decided at the later lower endpoint
+// (orient2d of that point against the other segment, then of the upper endpoint when the two
+// start at the same point). A contact that the comparison itself sees (a lower endpoint on
+// another segment, two segments from one point along one line) is recorded at once; every
+// other contact makes its two segments neighbours before the sweep passes it.
+#include "sweep_2d.h"
+
+#include <ext/pb_ds/assoc_container.hpp>
+#include <ext/pb_ds/tree_policy.hpp>
+
+#include <algorithm>
+#include <utility>
+
+#include "certimesh/predicates/orient2d.h"
+#include "stages.h"
+
+namespace certimesh::certificate::detail {
+namespace {
+
+using predicates::Point2;
+using predicates::Sign;
+
+bool lex_less(const Point2& a, const Point2& b) { return a.y != b.y ? a.y < b.y : a.x < b.x; }
+
+struct Segment {
+  Point2 lo, hi;  // lexicographically lower and upper end
+  int weight;     // leftward-ray crossing sign of the oriented segment
+};
+
+struct Key {
+  std::uint32_t segment;
+  int weight;
+};
+
+// The comparison needs the segments and a place to record a contact it notices.
+struct Context {
+  const std::vector<Segment>* segments = nullptr;
+  std::int64_t contact_a = -1, contact_b = -1;
+  bool query = false;  // comparing the query point (segment index UINT32_MAX) with segments
+  Point2 point{0, 0};
+};
+
+// Whether a point is left of segment f along the sweep line through it (f spans that line):
+// +1 left, -1 right, 0 on f's line (the point is then on f, f spanning the sweep there).
+Sign side(const Segment& f, const Point2& p) { return predicates::orient2d(f.lo, f.hi, p); }
+
+struct LeftOf {
+  Context* context = nullptr;
+  bool operator()(const Key& a, const Key& b) const {
+    if (a.segment == b.segment) return false;
+    if (a.segment == UINT32_MAX) return point_left_of(b);
+    if (b.segment == UINT32_MAX) return !point_left_of(a);
+    const Segment& e = (*context->segments)[a.segment];
+    const Segment& f = (*context->segments)[b.segment];
+    // Decide at the later lower end: it lies on the sweep line where both cross it.
+    const bool e_later = !lex_less(e.lo, f.lo);
+    const Segment& later = e_later ? e : f;
+    const Segment& other = e_later ? f : e;
+    Sign s = side(other, later.lo);
+    if (s == Sign::zero) {
+      if (!(later.lo == other.lo)) note(a.segment, b.segment);  // a lower end inside the other
+      s = side(other, later.hi);
+      if (s == Sign::zero) note(a.segment, b.segment), s = a.segment < b.segment ? Sign::positive : Sign::negative;
+    }
+    return (s == Sign::positive) == e_later;  // the later one is left of the other
+  }
+  bool point_left_of(const Key& k) const {
+    const Segment& f = (*context->segments)[k.segment];
+    const Sign s = side(f, context->point);
+    return s != Sign::negative;  // on f: at its lower end (or inside it), a point just left of it
+  }
+  void note(std::uint32_t a, std::uint32_t b) const {
+    if (context->contact_a < 0) context->contact_a = a, context->contact_b = b;
+  }
+};
+
+template <class NodeCIt, class NodeIt, class CmpFn, class Alloc>
+struct SubtreeWeight {
+  using metadata_type = int;
+  void operator()(NodeIt it, NodeCIt end) {
+    int sum = (*it)->weight;
+    if (it.get_l_child() != end) sum += it.get_l_child().get_metadata();
+    if (it.get_r_child() != end) sum += it.get_r_child().get_metadata();
+    const_cast<int&>(it.get_metadata()) = sum;
+  }
+  virtual NodeCIt node_begin() const = 0;
+  virtual NodeCIt node_end() const = 0;
+  virtual ~SubtreeWeight() = default;
+};
+
+using Status = __gnu_pbds::tree<Key, __gnu_pbds::null_type, LeftOf, __gnu_pbds::rb_tree_tag, SubtreeWeight>;
+
+struct Event {
+  Point2 at;
+  int kind;  // 0 leave, 1 enter, 2 query (the order at one point)
+  std::uint32_t index;
+  friend bool operator<(const Event& a, const Event& b) {
+    if (!(a.at == b.at)) return lex_less(a.at, b.at);
+    return a.kind != b.kind ? a.kind < b.kind : a.index < b.index;
+  }
+};
+
+class Sweep {
+ public:
+  Sweep(const MeshView& m, const FacetSet& set) : m_(m), set_(set), status_(LeftOf{&context_}) {
+    context_.segments = &segments_;
+    for (std::size_t f = 0; f < set.size(); ++f) {
+      const Point2 a = m.p2(set.facet(f)[0]), b = m.p2(set.facet(f)[1]);
+      const int weight = a.y > b.y ? 1 : (a.y < b.y ? -1 : 0);
+      segments_.push_back(lex_less(a, b) ? Segment{a, b, weight} : Segment{b, a, weight});
+    }
+  }
+
+  // The first contact, as (segment, segment), or (-1, -1); answers the queries on the way.
+  std::pair<std::int64_t, std::int64_t> run(const std::vector<std::array<double, 2>>& queries, std::vector<SweepAnswer>& answers) {
+    std::vector<Event> events;
+    for (std::uint32_t f = 0; f < segments_.size(); ++f) events.push_back({segments_[f].lo, 1, f}), events.push_back({segments_[f].hi, 0, f});
+    for (std::uint32_t q = 0; q < queries.size(); ++q) events.push_back({{queries[q][0], queries[q][1]}, 2, q});
+    std::sort(events.begin(), events.end());
+    answers.assign(queries.size(), {});
+    where_.assign(segments_.size(), status_.end());
+    for (const Event& e : events) {
+      if (e.kind == 0) leave(e.index);
+      if (e.kind == 1) enter(e.index);
+      if (e.kind == 2) answers[e.index] = answer(e.at);
+      if (found_a_ >= 0) break;
+      if (context_.contact_a >= 0) return {context_.contact_a, context_.contact_b};
+    }
+    return {found_a_, found_b_};
+  }
+
+ private:
+  void test(Status::iterator a, Status::iterator b) {
+    if (a == status_.end() || b == status_.end() || found_a_ >= 0) return;
+    if (contact_of(m_, set_, a->segment, b->segment, Defect::t_junction, Defect::boundary_intersection, "").defect != Defect::none)
+      found_a_ = a->segment, found_b_ = b->segment;
+  }
+  Status::iterator before(Status::iterator it) { return it == status_.begin() ? status_.end() : std::prev(it); }
+  void enter(std::uint32_t f) {
+    const auto it = status_.insert(Key{f, segments_[f].weight}).first;
+    where_[f] = it;
+    test(before(it), it);
+    test(it, std::next(it));
+  }
+  void leave(std::uint32_t f) {
+    const Status::iterator it = where_[f];
+    const Status::iterator left = before(it), right = std::next(it);
+    status_.erase(it);
+    test(left, right);
+  }
+  // One descent: the weights of the segments left of the point, and the nearest of them.
+  SweepAnswer answer(const Point2& q) {
+    context_.point = q;
+    const LeftOf left_of{&context_};
+    SweepAnswer out;
+    for (auto node = status_.node_begin(); node != status_.node_end();) {
+      const Key& k = **node;
+      if (left_of.point_left_of(k)) {
+        if (predicates::orient2d(segments_[k.segment].lo, segments_[k.segment].hi, q) == Sign::zero &&
+            !(segments_[k.segment].lo == q))
+          out.on_facet = true;
+        node = node.get_l_child();
+        continue;
+      }
+      out.winding += k.weight + (node.get_l_child() != status_.node_end() ? node.get_l_child().get_metadata() : 0);
+      out.left_facet = k.segment;
+      node = node.get_r_child();
+    }
+    return out;
+  }
+
+  const MeshView& m_;
+  const FacetSet& set_;
+  std::vector<Segment> segments_;
+  Context context_;
+  Status status_;
+  std::vector<Status::iterator> where_;
+  std::int64_t found_a_ = -1, found_b_ = -1;
+};
+
+}  // namespace
+
+Finding sweep_2d(const MeshView& m, const FacetSet& set, Defect touching, Defect crossing, const std::string& what,
+                 const std::vector<std::array<double, 2>>& queries, std::vector<SweepAnswer>& answers) {
+  Sweep sweep(m, set);
+  const auto [a, b] = sweep.run(queries, answers);
+  if (a < 0) return {};
+  Finding f = contact_of(m, set, static_cast<std::size_t>(a), static_cast<std::size_t>(b), touching, crossing, what);
+  if (f.defect == Defect::none)  // the comparison saw a lower end on the other's line: a contact all the same
+    f = finding(touching, set.owner[static_cast<std::size_t>(a)], set.owner[static_cast<std::size_t>(b)], -1,
+                what + "s " + std::to_string(a) + " and " + std::to_string(b) + " meet beyond their shared vertices");
+  return f;
+}
+
+}  // namespace certimesh::certificate::detail

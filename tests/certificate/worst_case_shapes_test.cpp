@@ -1,0 +1,85 @@
+// The shapes that attain the certificate's worst cases (fuzz/worst_case_meshes.h), small:
+// confirmed valid by the rational oracle and plain geometry, certified, and, once broken in
+// one place, refused with the defect the break makes. Their timing at 1e5..1e6 elements is
+// bench_certificate_worst (bench/RESULTS.md), never a unit test.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "certimesh/certificate/check_mesh.h"
+#include "certimesh/fuzz/worst_case_meshes.h"
+#include "mesh_oracle.h"
+
+namespace certimesh::certificate::test {
+namespace {
+
+using io::MeshData;
+
+std::string defect_of(const MeshData& m, const MeshData* domain = nullptr) {
+  return std::string(defect_name(check_mesh(m, domain).finding.defect));
+}
+
+TEST(WorstCaseShapes, StarPolygonFan) {
+  MeshData m = fuzz::star_fan_2d(500);
+  ASSERT_TRUE(testing::all_elements_positive(m));
+  EXPECT_EQ(defect_of(m), "none");
+  // A notch moved out along its own ray to radius 1.5, beyond the tips: its boundary edges
+  // now reach past its neighbours' but stay in its wedge, so the star is still simple (no
+  // false contact among boxes that all overlap).
+  m.coordinates[2 * 2] *= 96, m.coordinates[2 * 2 + 1] *= 96;  // vertex 2 is a notch (r = 1/64)
+  ASSERT_TRUE(testing::all_elements_positive(m));
+  EXPECT_EQ(defect_of(m), "none") << "a notch pulled out along its ray is still a simple star";
+  // Reflect one tip across the x axis: two fan triangles turn over.
+  MeshData flipped = fuzz::star_fan_2d(500);
+  flipped.coordinates[2 * 3 + 1] = -flipped.coordinates[2 * 3 + 1];
+  EXPECT_EQ(defect_of(flipped), "inverted_element");
+}
+
+TEST(WorstCaseShapes, EdgeInManyTetrahedra) {
+  const MeshData m = fuzz::book_3d(300);
+  ASSERT_TRUE(testing::all_elements_positive(m));
+  const Report r = check_mesh(m);
+  EXPECT_TRUE(r.valid) << r.finding.message;
+  EXPECT_EQ(r.statistics.boundary_facets, 600u);
+  MeshData twice = m;  // the same book again, nested: one double cover
+  const auto first = static_cast<io::Index>(twice.point_count());
+  for (std::size_t i = 0; i < m.coordinates.size(); ++i) twice.coordinates.push_back(m.coordinates[i] * 0.5 + (i % 3 == 2 ? 0x1p-20 : 0));
+  for (io::Index v : m.tetrahedra) twice.tetrahedra.push_back(first + v);
+  ASSERT_TRUE(testing::all_elements_positive(twice));
+  EXPECT_EQ(defect_of(twice), "multiple_cover");
+}
+
+TEST(WorstCaseShapes, AHolePointPerHole) {
+  MeshData domain;
+  const MeshData m = fuzz::holey_grid_2d(21, domain);
+  ASSERT_TRUE(testing::all_elements_positive(m));
+  EXPECT_EQ(domain.hole_count(), 100u);
+  EXPECT_EQ(defect_of(m, &domain), "none");
+  MeshData no_hole_point = domain;  // one hole square without its hole point: a region to mesh
+  no_hole_point.holes.resize(no_hole_point.holes.size() - 2);
+  EXPECT_EQ(defect_of(m, &no_hole_point), "region_not_meshed");
+  MeshData inside = domain;  // a hole point moved into a meshed square
+  inside.holes[0] += 1;
+  EXPECT_EQ(defect_of(m, &inside), "hole_covered");
+  MeshData on_edge = domain;  // a hole point on a mesh boundary edge
+  on_edge.holes[0] += 0.5;
+  EXPECT_EQ(defect_of(m, &on_edge), "hole_covered");
+}
+
+TEST(WorstCaseShapes, NestedRings) {
+  const MeshData m = fuzz::nested_rings_2d(200);
+  ASSERT_TRUE(testing::all_elements_positive(m));
+  const Report r = check_mesh(m);
+  EXPECT_TRUE(r.valid) << r.finding.message;
+  EXPECT_EQ(r.statistics.boundary_components, 400u);
+  MeshData filled = m;  // fill the gap between rings 100 and 101 with the same ring twice
+  const auto first = static_cast<io::Index>(100 * 8);  // ring 100's vertices
+  for (io::Index i = 0; i < 4; ++i) {
+    const io::Index a = first + i, b = first + (i + 1) % 4, c = first + 4 + i, d = first + 4 + (i + 1) % 4;
+    filled.triangles.insert(filled.triangles.end(), {a, c, d, a, d, b});
+  }
+  EXPECT_EQ(defect_of(filled), "duplicate_element");
+}
+
+}  // namespace
+}  // namespace certimesh::certificate::test
