@@ -255,6 +255,53 @@ bool walk(const MeshView& m, const std::vector<Edge>& edges, const std::vector<I
   return true;
 }
 
+// 3D, the analogue of the 2D segment chains: a mesh triangle on domain triangle T, with the
+// side of T's plane its element lies on (0 when the element's fourth vertex is on the plane).
+struct TriangleOnFace {
+  std::uint32_t home;
+  std::array<Index, 3> vertices;
+  int side;
+  std::size_t element;
+  friend bool operator<(const TriangleOnFace& a, const TriangleOnFace& b) {
+    return a.home != b.home ? a.home < b.home : (a.vertices != b.vertices ? a.vertices < b.vertices : a.element < b.element);
+  }
+};
+
+int side_of(const Domain& d, std::uint32_t face, const predicates::Point3& p) {
+  const Index* t = d.facets.facet(face);
+  return static_cast<int>(predicates::orient3d(d.geo.p3(t[0]), d.geo.p3(t[1]), d.geo.p3(t[2]), p));
+}
+
+// The mesh triangles on each domain triangle T are all boundary triangles whose elements lie on
+// one side of T (T bounds the domain), or all interior (T is inside it: an interface): a face
+// covered partly one way and partly the other, or bounded from both sides, means the mesh
+// boundary leaves T through rounding slack (issue 12, as segment_chains.cpp in 2D).
+Finding faces_bound_one_side(std::vector<TriangleOnFace>& sides) {
+  std::sort(sides.begin(), sides.end());
+  for (std::size_t i = 0; i < sides.size();) {
+    std::size_t end = i;
+    int boundary_side = 0;
+    bool boundary = false, interior = false;
+    for (; end < sides.size() && sides[end].home == sides[i].home; ) {
+      std::size_t same = end + 1;
+      while (same < sides.size() && sides[same].home == sides[end].home && sides[same].vertices == sides[end].vertices) ++same;
+      const bool is_boundary = same - end == 1;
+      (is_boundary ? boundary : interior) = true;
+      const int side = sides[end].side;
+      if (is_boundary && side != 0 && boundary_side != 0 && side != boundary_side)
+        return finding(Defect::domain_boundary_not_covered, static_cast<std::int64_t>(sides[end].element), sides[end].home, -1,
+                       "domain triangle " + std::to_string(sides[end].home) + " is bounded by mesh elements on both of its sides");
+      if (is_boundary && side != 0) boundary_side = side;
+      end = same;
+    }
+    if (boundary && interior)
+      return finding(Defect::domain_boundary_not_covered, static_cast<std::int64_t>(sides[i].element), sides[i].home, -1,
+                     "domain triangle " + std::to_string(sides[i].home) + " is covered partly by mesh boundary triangles and partly by interior ones");
+    i = end;
+  }
+  return {};
+}
+
 // Every domain facet covered: its edges by chains of mesh edges (walk), and in 3D its area by
 // the mesh facets on it, whose mod-2 boundary must be exactly those chains: a 2-chain with
 // that boundary covers the face an odd number of times, and non-overlapping facets cover once.
@@ -265,15 +312,20 @@ Finding coverage(const MeshView& m, const FacetSet& b, const Domain& d, const st
   for (const OnFacet& o : on.on) near[o.vertex] = 1;
   const std::vector<Edge> edges = mesh_edges(m, near);
   std::vector<std::pair<std::uint32_t, std::array<Index, 3>>> on_face;  // (domain facet, mesh facet), once each
+  std::vector<TriangleOnFace> sides;  // and the side of the domain facet its element(s) lie on
   for (std::size_t e = 0; m.dim == 3 && e < m.element_count; ++e)
     for (int i = 0; i < 4; ++i) {
       std::array<Index, 3> x{m.cell(e)[(i + 1) % 4], m.cell(e)[(i + 2) % 4], m.cell(e)[(i + 3) % 4]};
       if (!near[x[0]] || !near[x[1]] || !near[x[2]]) continue;
       std::sort(x.begin(), x.end());
-      if (const std::uint32_t home = on.common(x.data(), 3); home != UINT32_MAX) on_face.push_back({home, x});
+      if (const std::uint32_t home = on.common(x.data(), 3); home != UINT32_MAX) {
+        on_face.push_back({home, x});
+        sides.push_back({home, x, side_of(d, home, m.p3(m.cell(e)[i])), e});
+      }
     }
   std::sort(on_face.begin(), on_face.end());
   on_face.erase(std::unique(on_face.begin(), on_face.end()), on_face.end());
+  if (Finding f = faces_bound_one_side(sides); f.defect != Defect::none) return f;
   auto next = on_face.begin();
   std::vector<std::uint32_t> seen(m.vertex_count, 0);
   std::uint32_t stamp = 0;
