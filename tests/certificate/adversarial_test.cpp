@@ -105,15 +105,23 @@ TEST(CertificateAdversary, SubUlpGapMustNotBeBridged) {
   EXPECT_EQ(defect_name(r.finding.defect), defect_name(Defect::domain_boundary_not_covered)) << r.finding.message;
 }
 
-// A vertex at the rounding of the exact point (2, 1/3) of the segment (3,0)-(0,1), all scaled
-// by 2^s: the measured area differs from the domain's by less than the bound, both reported.
+// The triangle (0,0) (3,0) (0,1) scaled by 2^s, and a mesh of it with a vertex at the rounding
+// of the exact point (2, 1/3) of its segment (3,0)-(0,1).
+struct RoundedSplit {
+  MeshData mesh, domain;
+  explicit RoundedSplit(int s) {
+    for (double x : {0.0, 0.0, 3.0, 0.0, 2.0, 1.0 / 3.0, 0.0, 1.0}) mesh.coordinates.push_back(std::ldexp(x, s));
+    append(mesh.triangles, {0, 1, 2, 0, 2, 3});
+    for (double x : {0.0, 0.0, 3.0, 0.0, 0.0, 1.0}) domain.coordinates.push_back(std::ldexp(x, s));
+    append(domain.segments, {0, 1, 1, 2, 2, 0});
+  }
+};
+
+// The measured area differs from the domain's by less than the bound, both reported.
 TEST(CertificateAdversary, MeasureDifferenceIsBoundedAndReported) {
   for (int s : {0, 400, -400}) {
-    MeshData m, d;
-    for (double x : {0.0, 0.0, 3.0, 0.0, 2.0, 1.0 / 3.0, 0.0, 1.0}) m.coordinates.push_back(std::ldexp(x, s));
-    append(m.triangles, {0, 1, 2, 0, 2, 3});
-    for (double x : {0.0, 0.0, 3.0, 0.0, 0.0, 1.0}) d.coordinates.push_back(std::ldexp(x, s));
-    append(d.segments, {0, 1, 1, 2, 2, 0});
+    const RoundedSplit split(s);
+    const MeshData &m = split.mesh, &d = split.domain;
     const Report r = check_mesh(m, &d);
     ASSERT_TRUE(r.valid) << r.finding.message;
     const mpq_class exact = mesh_area(m) - polygon_area(d, {0, 1, 2});  // oracle
@@ -129,12 +137,8 @@ TEST(CertificateAdversary, MeasureDifferenceIsBoundedAndReported) {
 // with the mesh (it used to read 0: squares overflowed or underflowed).
 TEST(CertificateAdversary, DeviationDoesNotOverflowOrUnderflow) {
   auto deviation_at = [](int s) {
-    MeshData m, d;
-    for (double x : {0.0, 0.0, 3.0, 0.0, 2.0, 1.0 / 3.0, 0.0, 1.0}) m.coordinates.push_back(std::ldexp(x, s));
-    append(m.triangles, {0, 1, 2, 0, 2, 3});
-    for (double x : {0.0, 0.0, 3.0, 0.0, 0.0, 1.0}) d.coordinates.push_back(std::ldexp(x, s));
-    append(d.segments, {0, 1, 1, 2, 2, 0});
-    const Report r = check_mesh(m, &d);
+    const RoundedSplit split(s);
+    const Report r = check_mesh(split.mesh, &split.domain);
     EXPECT_TRUE(r.valid) << r.finding.message;
     return r.statistics.max_boundary_deviation;
   };
