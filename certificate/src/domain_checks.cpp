@@ -10,6 +10,7 @@
 #include <limits>
 #include <cstdio>
 #include <numeric>
+#include <optional>
 #include <string>
 
 #include "certimesh/predicates/orient2d.h"
@@ -29,6 +30,10 @@ struct Domain {
   MeshView geo;     // coordinates only
   FacetSet facets;  // segments (2D) or triangles (3D), domain vertex ids
   BoundaryTolerance tolerance;
+  // 3D: every edge used once in each direction by its two triangles. Then the solid is where
+  // the winding number of the shells is non-zero (design decision 8): an inner shell oriented
+  // inward bounds a cavity without a hole point.
+  bool oriented = false;
 };
 
 std::vector<Vec> points_of(const MeshView& g, const Index* ids, int count) {
@@ -63,13 +68,18 @@ Finding load_domain(const io::MeshData& data, int dim, Domain& d) {
     const bool flat = dim == 2 ? p[0] == p[1] : cross(minus(p[1], p[0]), minus(p[2], p[0])) == Vec{0, 0, 0};
     if (flat) return invalid("facet " + std::to_string(f) + " is degenerate", static_cast<std::int64_t>(f));
   }
-  std::vector<Edge> edges;  // 3D: a closed surface, every edge in exactly two triangles
+  std::vector<std::pair<Edge, bool>> edges;  // 3D: a closed surface, every edge in exactly two triangles
   for (std::size_t f = 0; dim == 3 && f < d.facets.size(); ++f)
-    for (int i = 0; i < 3; ++i) edges.push_back(std::minmax(d.facets.facet(f)[i], d.facets.facet(f)[(i + 1) % 3]));
+    for (int i = 0; i < 3; ++i) {
+      const Index u = d.facets.facet(f)[i], w = d.facets.facet(f)[(i + 1) % 3];
+      edges.push_back({std::minmax(u, w), u < w});
+    }
   std::sort(edges.begin(), edges.end());
+  d.oriented = dim == 3;
   for (std::size_t i = 0, j = 0; i < edges.size(); i = j) {
-    while (j < edges.size() && edges[j] == edges[i]) ++j;
-    if (j - i != 2) return invalid("is not a closed surface: edge (" + std::to_string(edges[i].first) + ", " + std::to_string(edges[i].second) + ") is in " + std::to_string(j - i) + " triangle(s)");
+    while (j < edges.size() && edges[j].first == edges[i].first) ++j;
+    if (j - i != 2) return invalid("is not a closed surface: edge (" + std::to_string(edges[i].first.first) + ", " + std::to_string(edges[i].first.second) + ") is in " + std::to_string(j - i) + " triangle(s)");
+    d.oriented = d.oriented && edges[i].second != edges[i + 1].second;
   }
   Finding c = first_contact(d.geo, d.facets, Defect::invalid_domain, Defect::invalid_domain, "domain facet");
   if (c.defect != Defect::none) c.message = "the domain is not simple: " + c.message;
@@ -302,6 +312,52 @@ Finding faces_bound_one_side(std::vector<TriangleOnFace>& sides) {
   return {};
 }
 
+// The domain's winding number on the far side of domain triangle `home` from mesh element
+// `element` on it, or nullopt when it cannot be decided here. W_D is taken exactly at the
+// element's rounded centroid, once orient3d confirms that point strictly inside the element and
+// on no domain triangle (so in the region on the element's side), and W_D changes by one across
+// the triangle, down in the direction of its normal.
+std::optional<int> winding_beyond(const MeshView& m, const Domain& d, std::uint32_t home, std::size_t element) {
+  const Index* c = m.cell(element);
+  double centre[3];
+  for (int k = 0; k < 3; ++k) centre[k] = (m.coord(c[0], k) + m.coord(c[1], k) + m.coord(c[2], k) + m.coord(c[3], k)) / 4;
+  const predicates::Point3 p{centre[0], centre[1], centre[2]};
+  for (int i = 0; i < 4; ++i) {  // strictly inside: on the inner side of every face (kFace order of facet_pairing)
+    static constexpr int face[4][3] = {{1, 2, 3}, {0, 3, 2}, {0, 1, 3}, {0, 2, 1}};
+    if (predicates::orient3d(m.p3(c[face[i][0]]), m.p3(c[face[i][1]]), m.p3(c[face[i][2]]), p) != predicates::Sign::positive)
+      return std::nullopt;
+  }
+  for (std::size_t f = 0; f < d.facets.size(); ++f)
+    if (lies_exactly_on(corners(d.geo, d.facets.facet(f), 3), 3, centre)) return std::nullopt;
+  const int side = side_of(d, home, p);  // > 0: the element is on the side opposite the normal
+  if (side == 0) return std::nullopt;
+  std::vector<std::size_t> all(d.facets.size());
+  std::iota(all.begin(), all.end(), std::size_t{0});
+  const int here = winding_number(d.geo, d.facets, all, centre);
+  return side > 0 ? here - 1 : here + 1;
+}
+
+// With an oriented domain, a domain triangle inside the mesh (an interface) must have solid on
+// both sides: the same cube with its inward cavity filled is not a mesh of the domain.
+Finding interfaces_inside_solid(const MeshView& m, const Domain& d, const std::vector<TriangleOnFace>& sides) {
+  for (std::size_t i = 0; i < sides.size();) {
+    std::size_t end = i;
+    while (end < sides.size() && sides[end].home == sides[i].home) ++end;
+    const bool interior = end - i >= 2 && sides[i].vertices == sides[i + 1].vertices;  // all alike (faces_bound_one_side)
+    for (std::size_t k = i; interior && k < end; ++k) {
+      const std::optional<int> beyond = winding_beyond(m, d, sides[k].home, sides[k].element);
+      if (!beyond) continue;
+      if (*beyond == 0)
+        return finding(Defect::hole_covered, static_cast<std::int64_t>(sides[k].element), sides[k].home, -1,
+                       "the mesh covers both sides of domain triangle " + std::to_string(sides[k].home) +
+                           ", but by the orientation of the domain's shells one side is outside the solid (winding number 0)");
+      break;
+    }
+    i = end;
+  }
+  return {};
+}
+
 // Every domain facet covered: its edges by chains of mesh edges (walk), and in 3D its area by
 // the mesh facets on it, whose mod-2 boundary must be exactly those chains: a 2-chain with
 // that boundary covers the face an odd number of times, and non-overlapping facets cover once.
@@ -326,6 +382,8 @@ Finding coverage(const MeshView& m, const FacetSet& b, const Domain& d, const st
   std::sort(on_face.begin(), on_face.end());
   on_face.erase(std::unique(on_face.begin(), on_face.end()), on_face.end());
   if (Finding f = faces_bound_one_side(sides); f.defect != Defect::none) return f;
+  if (d.oriented)
+    if (Finding f = interfaces_inside_solid(m, d, sides); f.defect != Defect::none) return f;
   auto next = on_face.begin();
   std::vector<std::uint32_t> seen(m.vertex_count, 0);
   std::uint32_t stamp = 0;
@@ -399,7 +457,22 @@ Finding holes_and_regions_2d(const MeshView& m, const FacetSet& b, const Compone
 // 3D: each hole point strictly outside the mesh (W = 0, off the boundary), and each cavity
 // component of the mesh boundary the innermost component around some hole point. Only the
 // facets of components whose box holds p can hold p or wind around it.
-Finding holes_and_regions_3d(const MeshView& m, const FacetSet& b, const Components& comps, const io::MeshData& data) {
+// With an oriented domain, a cavity of the mesh whose inside the shells' winding number says
+// is outside the solid needs no hole point.
+bool cavity_outside_solid(const MeshView& m, const FacetSet& b, const Components& comps, std::size_t c, const Domain& d,
+                          const OnDomain& on) {
+  if (!d.oriented) return false;
+  for (std::size_t f : comps.facets[c]) {
+    const Index* x = b.facet(f);
+    const std::uint32_t home = on.common(x, 3);
+    if (home == UINT32_MAX) continue;
+    if (const std::optional<int> beyond = winding_beyond(m, d, home, static_cast<std::size_t>(b.owner[f]))) return *beyond == 0;
+  }
+  return false;
+}
+
+Finding holes_and_regions_3d(const MeshView& m, const FacetSet& b, const Components& comps, const Domain& d,
+                             const OnDomain& on, const io::MeshData& data) {
   std::vector<char> has_hole(comps.facets.size(), 0);
   for (std::size_t h = 0; h < data.hole_count(); ++h) {
     const double* p = data.holes.data() + h * static_cast<std::size_t>(m.dim);
@@ -418,6 +491,8 @@ Finding holes_and_regions_3d(const MeshView& m, const FacetSet& b, const Compone
     if (covered || w != 0) return hole_covered(h);
     if (innermost != SIZE_MAX) has_hole[innermost] = 1;
   }
+  for (std::size_t c = 0; c < comps.facets.size(); ++c)
+    if (comps.measure_sign[c] < 0 && !has_hole[c]) has_hole[c] = cavity_outside_solid(m, b, comps, c, d, on);
   return cavities_need_holes(b, comps, has_hole);
 }
 
@@ -435,7 +510,7 @@ Finding check_domain(const MeshView& m, const FacetSet& boundary, const Componen
   f = boundary_on_domain(m, boundary, d, on, stats);
   if (f.defect == Defect::none) f = coverage(m, boundary, d, lex_order, on, stats);
   if (f.defect == Defect::none)
-    f = m.dim == 2 ? holes_and_regions_2d(m, boundary, comps, lex_order, domain) : holes_and_regions_3d(m, boundary, comps, domain);
+    f = m.dim == 2 ? holes_and_regions_2d(m, boundary, comps, lex_order, domain) : holes_and_regions_3d(m, boundary, comps, d, on, domain);
   return f;
 }
 

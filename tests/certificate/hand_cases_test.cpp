@@ -44,8 +44,11 @@ io::MeshData domain_with_inner_block(int dimension, bool hole_point) {
   if (dimension == 2) {
     d = fuzz::square_domain(g);
   } else {
+    // The inner box oriented like the outer one: the winding number is 2 inside it, so it is
+    // solid (decision 8) unless a hole point says otherwise. Oriented inward it would bound a
+    // cavity with no hole point needed (unit_domain_test, CavityByOrientation3D).
     d = fuzz::cube_surface_domain(4);
-    fuzz::append_box_surface(d, 1, 3, true);
+    fuzz::append_box_surface(d, 1, 3, false);
     d.holes = {2, 2, 2};
   }
   if (!hole_point) d.holes.clear();

@@ -179,6 +179,41 @@ TEST(CertificateDomain, CubeFacesMustBeConformal) {
   expect_defect(kuhn_grid(2), other, Defect::facet_off_domain_boundary);
 }
 
+// The surface of the cube [lo, hi]^3 oriented consistently: every triangle's normal (right-hand
+// rule, checked here with a small-integer cross product) points outward, or inward if asked.
+void add_oriented_cube(MeshData& d, double lo, double hi, bool inward) {
+  const auto first = static_cast<Index>(d.coordinates.size() / 3);
+  add_cube(d, lo, hi);
+  const double mid = (lo + hi) / 2;
+  for (std::size_t t = first == 0 ? 0 : d.triangles.size() - 36; t < d.triangles.size(); t += 3) {
+    auto at = [&](std::size_t i, int k) { return d.coordinates[3 * d.triangles[t + i] + k]; };
+    double n[3], centre[3];
+    for (int k = 0; k < 3; ++k) {
+      const int k1 = (k + 1) % 3, k2 = (k + 2) % 3;
+      n[k] = (at(1, k1) - at(0, k1)) * (at(2, k2) - at(0, k2)) - (at(1, k2) - at(0, k2)) * (at(2, k1) - at(0, k1));
+      centre[k] = (at(0, k) + at(1, k) + at(2, k)) / 3 - mid;
+    }
+    const bool outward = n[0] * centre[0] + n[1] * centre[1] + n[2] * centre[2] > 0;
+    if (outward == inward) std::swap(d.triangles[t + 1], d.triangles[t + 2]);
+  }
+}
+
+// Decision 8 in 3D: the solid is where the winding number of the oriented shells is non-zero.
+TEST(CertificateDomain, CavityByOrientation3D) {
+  const MeshData shell = kuhn_grid(3, [](int i, int j, int k) { return i == 1 && j == 1 && k == 1; });
+  MeshData inward;
+  add_oriented_cube(inward, 0, 3, false);
+  add_oriented_cube(inward, 1, 2, true);
+  const Report r = check_mesh(shell, &inward);
+  EXPECT_TRUE(r.valid) << "an inner shell oriented inward is a cavity, no hole point needed: " << r.finding.message;
+  expect_defect(kuhn_grid(3), inward, Defect::hole_covered);  // the cavity filled
+  MeshData outward;
+  add_oriented_cube(outward, 0, 3, false);
+  add_oriented_cube(outward, 1, 2, false);
+  expect_defect(shell, outward, Defect::region_not_meshed);  // winding 2 inside: solid, not meshed
+  expect_defect(kuhn_grid(3), outward, Defect::none);       // an interface between two regions
+}
+
 TEST(CertificateDomain, CavityNeedsAHole3D) {
   MeshData d;
   add_cube(d, 0, 3);

@@ -140,6 +140,8 @@ def main():
     cube4_pts, cube4_tris = box_surface(0, 4)
     q, t = box_surface(1, 3, inward=True, base=8)
     write_medit("cube4_with_inner_box.mesh", cube4_pts + q, surface=cube4_tris + t)
+    q, t = box_surface(1, 3, inward=False, base=8)
+    write_medit("cube4_with_inner_box_outward.mesh", cube4_pts + q, surface=cube4_tris + t)
 
     # ---- valid ----
     pts, tris = kuhn_2d(4, 4)
@@ -322,7 +324,11 @@ def main():
     case("valid_square4_hole_2d.mesh", "square4_inner_region.poly", 1, "region_not_meshed", 24)
     hp3, ht3 = kuhn_3d(4, skip=lambda i, j, k: 1 <= i < 3 and 1 <= j < 3 and 1 <= k < 3)
     write_medit("cube4_cavity_3d.mesh", hp3, ht3)
-    case("cube4_cavity_3d.mesh", "cube4_with_inner_box.mesh", 1, "region_not_meshed", 336)
+    # decision 8: an inner shell oriented inward bounds a cavity (no hole point needed); one
+    # oriented like the outer shell has winding number 2 inside: solid, so left empty it is
+    # a region not meshed
+    case("cube4_cavity_3d.mesh", "cube4_with_inner_box.mesh", 0, "none", 336)
+    case("cube4_cavity_3d.mesh", "cube4_with_inner_box_outward.mesh", 1, "region_not_meshed", 336)
     case("cube4_cavity_3d.mesh", None, 0, "none", 336)
 
     # ---- unreadable (exit 2) ----
