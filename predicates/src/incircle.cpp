@@ -125,12 +125,50 @@ Sign compensated_sign(const std::array<double, 6>& h, const std::array<double, 6
   return compensated_stage(h, t, m);
 }
 
+// The small-integer stage (proofs/README.md section 13). When every coordinate is an
+// integer of magnitude at most 2^51 and every difference to d at most 2^12, the lifted
+// determinant evaluated in double is exact: with |h| <= M = 2^12 every lift and every minor
+// is an integer of magnitude at most 2 M^2, every product plift * pm at most 4 M^4 and the
+// partial sums at most 12 M^4 < 2^52, so every intermediate is an integer below 2^53, each
+// operation's exact result is representable and round-to-nearest returns it (a fused
+// multiply-add, rounding once, returns it too). The differences themselves are exact: two
+// integers of magnitude <= 2^51 differ by an integer of magnitude <= 2^52. The integer test
+// x == (x + 1.5 * 2^52) - 1.5 * 2^52 holds exactly for the integers among the x of
+// magnitude <= 2^51: the sum lies in [2^52, 2^53], where the doubles are integers, so it is
+// x + 1.5 * 2^52 exactly when x is an integer and an integer otherwise, and the
+// subtraction is exact (Sterbenz), giving x back only for an integer. The grid's exactly
+// cocircular tuples end here instead of in the compensated and expansion stages. Sets
+// *decided to false when the preconditions fail.
+Sign small_integer_incircle(const std::array<double, 8>& raw, bool* decided) {
+  constexpr double magic = 0x1.8p52, coordinate_limit = 0x1p51, difference_limit = 0x1p12;
+  bool ok = true;
+  for (double v : raw) ok &= (std::fabs(v) <= coordinate_limit) & ((v + magic) - magic == v);
+  std::array<double, 6> h;
+  for (std::size_t i = 0; i < 6; ++i) {
+    h[i] = raw[i] - raw[6 + i % 2];
+    ok &= std::fabs(h[i]) <= difference_limit;
+  }
+  *decided = ok;
+  if (!ok) return Sign::zero;
+  double det = 0.0;
+  for (const Cycle& cyc : cycles) {
+    const std::size_t p = 2 * cyc.p, q = 2 * cyc.q, r = 2 * cyc.r;
+    const double lift = h[p] * h[p] + h[p + 1] * h[p + 1];
+    const double minor = h[q] * h[r + 1] - h[r] * h[q + 1];
+    det += lift * minor;
+  }
+  return static_cast<Sign>(static_cast<int>(det > 0.0) - static_cast<int>(det < 0.0));
+}
+
 }  // namespace
 
 Sign incircle_exact_stage(const Point2& a, const Point2& b, const Point2& c, const Point2& d) {
   const std::array<double, 8> raw{a.x, a.y, b.x, b.y, c.x, c.y, d.x, d.y};
   if (!all_finite(raw)) throw NonFiniteInput("incircle");
   require_proven_fp_mode("incircle");
+  bool small_integers = false;
+  const Sign small = small_integer_incircle(raw, &small_integers);
+  if (small_integers) return small;
   std::array<double, 6> diffs, tails;
   bool exact_diffs = true;
   for (std::size_t i = 0; i < 6; ++i) {

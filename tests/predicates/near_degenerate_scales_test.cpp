@@ -8,6 +8,7 @@
 #include <cmath>
 #include <cstdint>
 #include <random>
+#include <vector>
 
 #include "certimesh/predicates/incircle.h"
 #include "certimesh/predicates/orient2d.h"
@@ -181,6 +182,88 @@ TEST(NearDegenerateScales, IncircleCocircularWithTailsMatchesOracle) {
   }
   // Mostly exact zeros (a repeated point also gives zero): the case the stage must leave.
   EXPECT_GT(zeros, total / 2);
+}
+
+// The small-integer stage of the exact incircle (proofs/README.md section 13): integer
+// coordinates up to 2^51, differences up to 2^12 evaluated in plain double. Called under
+// the filter (detail::incircle_exact_stage), on lattice points of circles x^2 + y^2 = R
+// with many representations (exact zeros), moved by one unit (signs decided by a few units
+// of a determinant of order 2^48), around centres from 0 to beyond 2^51, with radii below
+// and above the 2^12 limit (there the other stages answer; a limit raised past 2^12 makes
+// the double evaluation round and these cases fail), and at half-integer positions (not
+// integers: the stage must decline).
+TEST(NearDegenerateScales, IncircleSmallIntegerStageMatchesOracle) {
+  std::mt19937_64 rng(0x5eed0007u);
+  int zeros = 0, total = 0;
+  // R = 25, 5 * 13 * 17 * 29 (radius ~179), * 37 (~1089), 2 * 5 * 13 * 17 * 29 * 41 (~1621):
+  // differences below 2^12; 5^2 * 13 * 17 * 29 * 37 (~2435): some above; 5 * 13 * 17 * 29 *
+  // 37 * 41 (~6972): differences up to ~13944; * 53 * 61 (~396,400): up to ~2^19.6, where
+  // the double evaluation rounds (the stage with its limit raised to 2^20 fails here).
+  for (const std::int64_t r2 : {std::int64_t{25}, std::int64_t{32045}, std::int64_t{1185665}, std::int64_t{2627690},
+                                std::int64_t{5928325}, std::int64_t{48612265}, std::int64_t{157163452745}}) {
+    std::vector<std::array<std::int64_t, 2>> lattice;
+    for (std::int64_t x = 0; x * x <= r2; ++x) {
+      const auto y = static_cast<std::int64_t>(std::llround(std::sqrt(static_cast<double>(r2 - x * x))));
+      for (std::int64_t yy = std::max<std::int64_t>(0, y - 1); yy <= y + 1; ++yy)
+        if (x * x + yy * yy == r2)
+          for (int k = 0; k < 4; ++k) lattice.push_back({(k & 1) ? -x : x, (k & 2) ? -yy : yy});
+    }
+    ASSERT_GE(lattice.size(), 8u) << r2;
+    for (const double base : {0.0, 1000.0, -123456789.0, 0x1p40, 0x1p51 - 20000.0, 0x1p51 + 4096.0, 0x1p52}) {
+      for (int i = 0; i < 200; ++i) {
+        const double cx = base + static_cast<double>(rng() % 2001) - 1000.0;
+        const double cy = -base + static_cast<double>(rng() % 2001) - 1000.0;
+        std::array<std::array<double, 2>, 4> pts;
+        for (auto& pt : pts) {
+          const auto& q = lattice[rng() % lattice.size()];
+          pt = {cx + static_cast<double>(q[0]), cy + static_cast<double>(q[1])};
+        }
+        const int move = static_cast<int>(i % 6);
+        if (move == 1 || move == 2) pts[i % 4][i % 2] += move == 1 ? 1.0 : -1.0;
+        if (move == 3) pts[i % 4][i % 2] += 0.5;  // a half-integer: not for this stage
+        const pr::Point2 a{pts[0][0], pts[0][1]}, b{pts[1][0], pts[1][1]}, c{pts[2][0], pts[2][1]},
+            d{pts[3][0], pts[3][1]};
+        const int want = oracle_incircle(pts);
+        ASSERT_EQ(pr::to_int(pr::detail::incircle_exact_stage(a, b, c, d)), want)
+            << "R " << r2 << " base " << base << " case " << i;
+        ASSERT_EQ(pr::to_int(pr::incircle(a, b, c, d)), want) << "R " << r2 << " base " << base << " case " << i;
+        zeros += want == 0;
+        ++total;
+      }
+    }
+  }
+  // Random small-integer tuples (mostly far from cocircular) and the limit itself: every
+  // difference exactly +-2^12, and one of them 2^12 + 1.
+  for (int i = 0; i < 3000; ++i) {
+    std::array<std::array<double, 2>, 4> pts;
+    for (auto& pt : pts)
+      for (double& v : pt) v = static_cast<double>(static_cast<std::int64_t>(rng() % 8193) - 4096);
+    if (i % 3 == 0)
+      for (std::size_t k = 0; k < 3; ++k)
+        for (std::size_t j = 0; j < 2; ++j) pts[k][j] = pts[3][j] + ((rng() & 1u) != 0 ? 4096.0 : -4096.0);
+    if (i % 3 == 1) pts[0][0] = pts[3][0] + 4097.0;
+    const pr::Point2 a{pts[0][0], pts[0][1]}, b{pts[1][0], pts[1][1]}, c{pts[2][0], pts[2][1]},
+        d{pts[3][0], pts[3][1]};
+    const int want = oracle_incircle(pts);
+    ASSERT_EQ(pr::to_int(pr::detail::incircle_exact_stage(a, b, c, d)), want) << "random case " << i;
+    zeros += want == 0;
+    ++total;
+  }
+  // Points of x^2 + y^2 = 25 around the origin, one coordinate moved by 2^-50: exact
+  // coordinates, not integers (the stage must decline: in double the determinant, of order
+  // 2^-47, drowns in the rounding of terms of order 2^10).
+  static constexpr std::array<std::array<double, 2>, 12> on25{
+      {{5, 0}, {4, 3}, {3, 4}, {0, 5}, {-3, 4}, {-4, 3}, {-5, 0}, {-4, -3}, {-3, -4}, {0, -5}, {3, -4}, {4, -3}}};
+  for (int i = 0; i < 400; ++i) {
+    std::array<std::array<double, 2>, 4> pts;
+    for (auto& pt : pts) pt = on25[rng() % 12];
+    pts[i % 4][(i / 4) % 2] += (i % 3 == 0) ? 0x1p-50 : -0x1p-50;
+    const pr::Point2 a{pts[0][0], pts[0][1]}, b{pts[1][0], pts[1][1]}, c{pts[2][0], pts[2][1]},
+        d{pts[3][0], pts[3][1]};
+    ASSERT_EQ(pr::to_int(pr::detail::incircle_exact_stage(a, b, c, d)), oracle_incircle(pts)) << "moved case " << i;
+  }
+  // The lattice cases are mostly exact zeros (the moved ones are not).
+  EXPECT_GT(zeros, total / 4);
 }
 
 TEST(NearDegenerateScales, Orient2dNearCollinearFilterAndExactMatchOracle) {
