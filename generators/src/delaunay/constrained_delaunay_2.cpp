@@ -77,19 +77,19 @@ void ConstrainedDelaunay2::build(std::span<const Point2> input, const ProgressCa
     points_[k] = input[external_[k]];
   }
   vertex_triangle_.assign(points_.size(), none);
-  start_of_.assign(points_.size(), none);
-  std::vector<std::uint32_t> order(points_.size());
-  for (std::size_t k = 0; k < order.size(); ++k) order[k] = static_cast<std::uint32_t>(k);
-  // The first triangle: the first two points in order and the first point off their line.
-  std::size_t third = order.size();
-  if (order.size() >= 2 && pt(order[0]) == pt(order[1])) throw_duplicate(order[0], order[1]);
-  for (std::size_t k = 2; k < order.size(); ++k)
-    if (orient_exact(pt(order[0]), pt(order[1]), pt(order[k])) != 0) {
+  // Internal ids are the insertion order. The first triangle: the first two points and the
+  // first point off their line.
+  const std::size_t n = points_.size();
+  std::size_t third = n;
+  if (n >= 2 && pt(0) == pt(1)) throw_duplicate(0, 1);
+  for (std::size_t k = 2; k < n; ++k)
+    if (orient_exact(pt(0), pt(1), pt(static_cast<VertexId>(k))) != 0) {
       third = k;
       break;
     }
-  if (third == order.size()) {  // all collinear: no triangle, but duplicates are still refused
-    std::vector<std::uint32_t> sorted = order;  // internal ids
+  if (third == n) {  // all collinear: no triangle, but duplicates are still refused
+    std::vector<std::uint32_t> sorted(n);  // internal ids
+    for (std::size_t k = 0; k < n; ++k) sorted[k] = static_cast<std::uint32_t>(k);
     std::sort(sorted.begin(), sorted.end(), [&](std::uint32_t i, std::uint32_t j) {
       return pt(i).x != pt(j).x ? pt(i).x < pt(j).x : (pt(i).y != pt(j).y ? pt(i).y < pt(j).y : i < j);
     });
@@ -100,14 +100,13 @@ void ConstrainedDelaunay2::build(std::span<const Point2> input, const ProgressCa
   flags_.reserve(2 * points_.size() + 8);
   corner_.reserve(3 * flags_.capacity());
   adjacent_.reserve(3 * flags_.capacity());
-  mark_.reserve(flags_.capacity());
-  make_first_triangle(order[0], order[1], order[third]);
-  for (std::size_t k = 2; k < order.size(); ++k) {
+  make_first_triangle(0, 1, static_cast<VertexId>(third));
+  for (std::size_t k = 2; k < n; ++k) {
     if (k == third) continue;
-    insert_vertex(order[k], last_, false);
-    if ((k & 0xffff) == 0) report(progress, "delaunay", k, order.size());
+    insert_vertex(static_cast<VertexId>(k), last_, false);
+    if ((k & 0xffff) == 0) report(progress, "delaunay", k, n);
   }
-  report(progress, "delaunay", order.size(), order.size());
+  report(progress, "delaunay", n, n);
 }
 
 ConstrainedDelaunay2::TriangleId ConstrainedDelaunay2::new_slot() {
@@ -121,7 +120,6 @@ ConstrainedDelaunay2::TriangleId ConstrainedDelaunay2::new_slot() {
   // push_back, not resize: resize fills (a memset of the whole growth) and was ~10 % of
   // the construction time; the entries are written right after anyway.
   for (int i = 0; i < 3; ++i) corner_.push_back(none), adjacent_.push_back(none);
-  mark_.push_back(0);
   return t;
 }
 
@@ -150,7 +148,7 @@ void ConstrainedDelaunay2::make_first_triangle(VertexId a, VertexId b, VertexId 
   last_ = t;
 }
 
-bool ConstrainedDelaunay2::in_circle(TriangleId t, const Point2& p, VertexId pid) const {
+inline bool ConstrainedDelaunay2::in_circle(TriangleId t, const Point2& p, VertexId pid) const {
   const VertexId* c = &corner_[3 * std::size_t{t}];
   if (flags_[t] & ghost_flag) {
     // The limit of the circumcircle through the hull edge (u, v) and the infinite vertex:
@@ -207,68 +205,138 @@ ConstrainedDelaunay2::TriangleId ConstrainedDelaunay2::locate(const Point2& p, T
   return walk(p, hint, &equal);
 }
 
+// The stochastic walk of walk(), remembering the edge it came through (Devillers, Pion and
+// Teillaud, "Walking in a triangulation"): that edge has p on its inner side already, so
+// each step after the first tests at most two edges. Where it stops it is exactly where
+// walk() would stop (p inside or on the triangle, or across a hull edge), by the same
+// exact signs. It terminates in a Delaunay triangulation; for any other triangulation (a
+// constrained one) the step count is capped, and past the cap walk() continues, whose
+// termination with probability 1 holds in any triangulation.
+ConstrainedDelaunay2::TriangleId ConstrainedDelaunay2::walk_remembering(const Point2& p, TriangleId start,
+                                                                        VertexId* equal_vertex) const {
+  TriangleId t = start;
+  if (t == none || t >= flags_.size() || (flags_[t] & dead_flag)) t = last_;
+  if (flags_[t] & ghost_flag) {
+    const std::uint32_t k = corner_[3 * t] == ghost ? 0 : (corner_[3 * t + 1] == ghost ? 1 : 2);
+    t = adjacent_[3 * t + k] / 3;
+  }
+  static constexpr std::uint32_t plus[5] = {0, 1, 2, 0, 1};  // (i + k) % 3 for i, k < 3
+  const std::size_t cap = 4 * flags_.size() + 64;
+  std::uint32_t state = 0x9e3779b9u;
+  std::uint32_t entry = 3;  // the local index of the edge crossed into t; 3: none
+  for (std::size_t step = 0;; ++step) {
+    if (flags_[t] & ghost_flag) return t;
+    if (step > cap) return walk(p, t, equal_vertex);
+    state ^= state << 13, state ^= state >> 17, state ^= state << 5;
+    const std::uint32_t first = state % 3;
+    const VertexId* c = &corner_[3 * std::size_t{t}];
+    bool moved = false;
+    for (std::uint32_t k = 0; k < 3; ++k) {
+      const std::uint32_t i = plus[first + k];
+      if (i == entry) continue;
+      const VertexId a = c[plus[i + 1]], b = c[plus[i + 2]];
+      const int s = orient_perturbed(pt(a), pt(b), p);
+      if (s < 0) {
+        const std::uint32_t h = adjacent_[3 * t + i];
+        t = h / 3;
+        entry = h % 3;
+        moved = true;
+        break;
+      }
+      if (s == 0) [[unlikely]] {
+        *equal_vertex = pt(a) == p ? a : b;
+        return t;
+      }
+    }
+    if (!moved) return t;
+  }
+}
+
 void ConstrainedDelaunay2::insert_vertex(VertexId v, TriangleId start, bool respect_constraints) {
   const Point2 p = pt(v);
   VertexId equal = none;
-  const TriangleId first = walk(p, start, &equal);
+  const TriangleId first = walk_remembering(p, start, &equal);
   if (equal != none) throw_duplicate(equal, v);
   // The cavity: the triangles whose (perturbed) circumcircle holds p, reachable from the
-  // one containing p -- without crossing a constrained edge when constraints count.
-  ++epoch_;
-  const std::uint32_t in = 2 * epoch_, out = in + 1;
+  // one containing p -- without crossing a constrained edge when constraints count. A
+  // depth-first search that looks across the edges of each triangle in counterclockwise
+  // order, after the one it entered by, meets the cavity's boundary edges in
+  // counterclockwise order around p (the cavity is a disk), so consecutive new triangles
+  // are neighbours. A triangle tested twice (it shares two edges with the cavity) gets the
+  // same exact answer both times; the cavity flag keeps the search a search on a graph
+  // whatever the cavity's shape.
   cavity_.clear();
   boundary_.clear();
-  stack_.assign(1, first);
-  mark_[first] = in;
-  while (!stack_.empty()) {
-    const TriangleId t = stack_.back();
-    stack_.pop_back();
-    cavity_.push_back(t);
-    for (std::uint32_t i = 0; i < 3; ++i) {
-      const std::uint32_t h = 3 * t + i;
-      const TriangleId n = adjacent_[h] / 3;
-      const bool constrained = (flags_[t] >> i) & 1u;
-      bool is_boundary = true;
-      if (!(respect_constraints && constrained)) {
-        if (mark_[n] == in) continue;
-        if (mark_[n] != out) {
-          if (in_circle(n, p, v)) {
-            mark_[n] = in;
-            stack_.push_back(n);
-            is_boundary = false;
-          } else {
-            mark_[n] = out;
-          }
-        }
-      }
-      if (is_boundary)
-        boundary_.push_back({corner_[3 * t + next_local(i)], corner_[3 * t + prev_local(i)], adjacent_[h], constrained});
+  dig_.clear();
+  dig_.push_back({first, 0, 3});
+  flags_[first] |= cavity_flag;
+  cavity_.push_back(first);
+  try {
+    dig_cavity(p, v, respect_constraints);
+  } catch (...) {  // a duplicate point: leave no flag behind
+    for (TriangleId t : cavity_) flags_[t] = static_cast<std::uint8_t>(flags_[t] & ~cavity_flag);
+    throw;
+  }
+  finish_star(v);
+}
+
+void ConstrainedDelaunay2::dig_cavity(const Point2& p, VertexId v, bool respect_constraints) {
+  while (!dig_.empty()) {
+    DigFrame& f = dig_.back();
+    if (f.left == 0) {
+      dig_.pop_back();
+      continue;
     }
+    const TriangleId t = f.t;
+    const std::uint32_t i = f.local;
+    f.local = next_local(i);
+    --f.left;
+    const std::uint32_t h = 3 * t + i;
+    const std::uint32_t across = adjacent_[h];
+    const TriangleId n = across / 3;
+    const bool constrained = (flags_[t] >> i) & 1u;
+    if (!(respect_constraints && constrained)) {
+      if (flags_[n] & cavity_flag) continue;  // an edge inside the cavity
+      if (in_circle(n, p, v)) {
+        flags_[n] |= cavity_flag;
+        cavity_.push_back(n);
+        dig_.push_back({n, next_local(across % 3), 2});
+        continue;
+      }
+    }
+    boundary_.push_back({corner_[3 * t + next_local(i)], corner_[3 * t + prev_local(i)], across, constrained});
   }
-  // The star of p: one triangle (p, a, b) per boundary edge, reusing the cavity's slots.
-  for (TriangleId t : cavity_) {
-    flags_[t] = dead_flag;
-    free_slots_.push_back(t);
+}
+
+void ConstrainedDelaunay2::finish_star(VertexId v) {
+  // The star of p: one triangle (p, a, b) per boundary edge, in the cavity's slots first.
+  const std::size_t m = boundary_.size();
+  for (std::size_t k = m; k < cavity_.size(); ++k) {  // not for a disk (m = cavity + 2)
+    flags_[cavity_[k]] = dead_flag;
+    free_slots_.push_back(cavity_[k]);
   }
+  cavity_.resize(m, none);
   TriangleId real = none;
-  for (const BoundaryEdge& e : boundary_) {
-    const TriangleId t = new_slot();
+  for (std::size_t k = 0; k < m; ++k) {
+    const BoundaryEdge& e = boundary_[k];
+    if (cavity_[k] == none) cavity_[k] = new_slot();
+    const TriangleId t = cavity_[k];
     corner_[3 * t] = v;
     corner_[3 * t + 1] = e.a;
     corner_[3 * t + 2] = e.b;
     const bool is_ghost_triangle = e.a == ghost || e.b == ghost;
     flags_[t] = static_cast<std::uint8_t>((e.constrained ? 1u : 0u) | (is_ghost_triangle ? ghost_flag : 0u));
     link(3 * t, e.outer);
-    if (e.a == ghost) ghost_start_ = t;
-    else start_of_[e.a] = t, vertex_triangle_[e.a] = t;
+    if (e.a != ghost) vertex_triangle_[e.a] = t;
     if (!is_ghost_triangle) real = t;
   }
-  for (const BoundaryEdge& e : boundary_) {
-    const TriangleId t = e.a == ghost ? ghost_start_ : start_of_[e.a];
-    const TriangleId next = e.b == ghost ? ghost_start_ : start_of_[e.b];
-    link(3 * t + 1, 3 * next + 2);
+  // Triangle k's edge (b, p) is triangle k + 1's edge (p, a): b_k = a_(k+1).
+  for (std::size_t k = 0; k < m; ++k) {
+    const std::size_t next = k + 1 == m ? 0 : k + 1;
+    if (boundary_[k].b != boundary_[next].a) throw std::logic_error("delaunay: the cavity is not a disk");
+    link(3 * cavity_[k] + 1, 3 * cavity_[next] + 2);
   }
-  const TriangleId some = real != none ? real : (boundary_.back().a == ghost ? ghost_start_ : start_of_[boundary_.back().a]);
+  const TriangleId some = real != none ? real : cavity_[m - 1];
   vertex_triangle_[v] = some;
   last_ = some;
 }
@@ -467,7 +535,6 @@ ConstrainedDelaunay2::VertexId ConstrainedDelaunay2::insert_point(const Point2& 
   external_.push_back(v);
   internal_.push_back(v);
   vertex_triangle_.push_back(none);
-  start_of_.push_back(none);
   insert_vertex(v, t, true);
   return v;
 }

@@ -7,11 +7,12 @@
 #include <span>
 #include <vector>
 
+#include "certimesh/generators/delaunay/large_array.h"
 #include "certimesh/predicates/point.h"
 
 namespace certimesh::generators::detail {
 
 /// The indices of `points` (all finite) in Hilbert-curve order.
-std::vector<std::uint32_t> hilbert_order(std::span<const predicates::Point2> points);
+std::vector<std::uint32_t, LargeArrayAllocator<std::uint32_t>> hilbert_order(std::span<const predicates::Point2> points);
 
 }  // namespace certimesh::generators::detail

@@ -1,6 +1,7 @@
 # Sources of generators/src/delaunay (included by generators/CMakeLists.txt).
 target_sources(certimesh_generators PRIVATE
   ${CMAKE_CURRENT_LIST_DIR}/hilbert_order.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/large_array.cpp
   ${CMAKE_CURRENT_LIST_DIR}/constrained_delaunay_2.cpp
   ${CMAKE_CURRENT_LIST_DIR}/delaunay_refinement_2.cpp
 )

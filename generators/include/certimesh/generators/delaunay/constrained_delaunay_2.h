@@ -23,6 +23,7 @@
 #include <string>
 #include <vector>
 
+#include "certimesh/generators/delaunay/large_array.h"
 #include "certimesh/generators/domain/planar_domain.h"
 #include "certimesh/generators/progress.h"
 #include "certimesh/predicates/point.h"
@@ -98,6 +99,7 @@ class ConstrainedDelaunay2 {
  private:
   static constexpr std::uint8_t dead_flag = 1u << 3;
   static constexpr std::uint8_t ghost_flag = 1u << 4;
+  static constexpr std::uint8_t cavity_flag = 1u << 5;  // only during insert_vertex
   static constexpr std::uint8_t constrained_mask = 0x7;
 
   struct BoundaryEdge {
@@ -105,12 +107,19 @@ class ConstrainedDelaunay2 {
     std::uint32_t outer;   // the half-edge (3 * slot + local) across, outside the cavity
     bool constrained;
   };
-  enum class Walk { inside, on_vertex };
+  struct DigFrame {           // the cavity search's explicit recursion
+    TriangleId t;
+    std::uint32_t local;      // the next edge of t to look across
+    std::uint32_t left;       // how many edges of t are still to look across
+  };
 
   void build(std::span<const Point2> input, const ProgressCallback& progress);
   void make_first_triangle(VertexId a, VertexId b, VertexId c);
   void insert_vertex(VertexId v, TriangleId start, bool respect_constraints);
+  void dig_cavity(const Point2& p, VertexId v, bool respect_constraints);  // fills cavity_, boundary_
+  void finish_star(VertexId v);  // replaces the cavity by the star of v
   TriangleId walk(const Point2& p, TriangleId start, VertexId* equal_vertex) const;
+  TriangleId walk_remembering(const Point2& p, TriangleId start, VertexId* equal_vertex) const;
   bool in_circle(TriangleId t, const Point2& p, VertexId pid) const;
   TriangleId new_slot();
   void link(std::uint32_t half_edge_a, std::uint32_t half_edge_b);
@@ -124,22 +133,21 @@ class ConstrainedDelaunay2 {
 
   // Vertices are numbered internally in insertion (Hilbert) order, so the per-vertex arrays
   // are read with locality; the public ids are the input indices.
-  std::vector<Point2> points_;            // by internal id
-  std::vector<VertexId> external_;        // internal id -> public id
-  std::vector<VertexId> internal_;        // public id -> internal id
-  std::vector<VertexId> corner_;          // 3 per slot; `none` is the ghost vertex
-  std::vector<std::uint32_t> adjacent_;   // 3 per slot: the half-edge across, 3 * slot + local
-  std::vector<std::uint8_t> flags_;       // bits 0-2 constrained edges, dead, ghost
-  std::vector<TriangleId> vertex_triangle_;
+  template <class T>
+  using Array = std::vector<T, detail::LargeArrayAllocator<T>>;  // large_array.h
+  Array<Point2> points_;                  // by internal id
+  Array<VertexId> external_;              // internal id -> public id
+  Array<VertexId> internal_;              // public id -> internal id
+  Array<VertexId> corner_;                // 3 per slot; `none` is the ghost vertex
+  Array<std::uint32_t> adjacent_;         // 3 per slot: the half-edge across, 3 * slot + local
+  Array<std::uint8_t> flags_;             // bits 0-2 constrained edges, dead, ghost, cavity
+  Array<TriangleId> vertex_triangle_;
   std::vector<TriangleId> free_slots_;
   TriangleId last_ = none;                // where the next walk starts
   // Scratch of insert_vertex, kept to avoid reallocation.
-  std::vector<std::uint32_t> mark_;       // 2 * epoch: in the cavity, 2 * epoch + 1: outside
-  std::uint32_t epoch_ = 0;
-  std::vector<TriangleId> cavity_, stack_;
-  std::vector<BoundaryEdge> boundary_;
-  std::vector<TriangleId> start_of_;      // new triangle starting at a boundary vertex
-  TriangleId ghost_start_ = none;
+  std::vector<TriangleId> cavity_;
+  std::vector<DigFrame> dig_;
+  std::vector<BoundaryEdge> boundary_;    // in counterclockwise order around the cavity
 };
 
 }  // namespace certimesh::generators
