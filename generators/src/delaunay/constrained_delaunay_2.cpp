@@ -164,56 +164,17 @@ inline bool ConstrainedDelaunay2::in_circle(TriangleId t, const Point2& p, Verte
   return s > 0;
 }
 
-ConstrainedDelaunay2::TriangleId ConstrainedDelaunay2::walk(const Point2& p, TriangleId start,
-                                                            VertexId* equal_vertex) const {
-  TriangleId t = start;
-  if (t == none || t >= flags_.size() || (flags_[t] & dead_flag)) t = last_;
-  if (flags_[t] & ghost_flag) {
-    const std::uint32_t k = corner_[3 * t] == ghost ? 0 : (corner_[3 * t + 1] == ghost ? 1 : 2);
-    t = adjacent_[3 * t + k] / 3;
-  }
-  // Stochastic order of the edge tests: a deterministic visibility walk may cycle in a
-  // constrained (non-Delaunay) triangulation; a seeded generator keeps the result
-  // reproducible.
-  std::uint32_t state = 0x9e3779b9u;
-  for (;;) {
-    if (flags_[t] & ghost_flag) return t;
-    state ^= state << 13, state ^= state >> 17, state ^= state << 5;
-    const std::uint32_t first = state % 3;
-    bool moved = false;
-    for (std::uint32_t k = 0; k < 3; ++k) {
-      const std::uint32_t i = (first + k) % 3;
-      const VertexId a = corner_[3 * t + next_local(i)], b = corner_[3 * t + prev_local(i)];
-      const int s = orient_perturbed(pt(a), pt(b), p);
-      if (s == 0) {
-        *equal_vertex = pt(a) == p ? a : b;
-        return t;
-      }
-      if (s < 0) {
-        t = adjacent_[3 * t + i] / 3;
-        moved = true;
-        break;
-      }
-    }
-    if (!moved) return t;
-  }
-}
-
-ConstrainedDelaunay2::TriangleId ConstrainedDelaunay2::locate(const Point2& p, TriangleId hint) const {
-  if (flags_.empty() || !std::isfinite(p.x) || !std::isfinite(p.y)) return none;
-  VertexId equal = none;
-  return walk(p, hint, &equal);
-}
-
-// The stochastic walk of walk(), remembering the edge it came through (Devillers, Pion and
-// Teillaud, "Walking in a triangulation"): that edge has p on its inner side already, so
-// each step after the first tests at most two edges. Where it stops it is exactly where
-// walk() would stop (p inside or on the triangle, or across a hull edge), by the same
-// exact signs. It terminates in a Delaunay triangulation; for any other triangulation (a
-// constrained one) the step count is capped, and past the cap walk() continues, whose
+// Stochastic order of the edge tests: a deterministic visibility walk may cycle in a
+// constrained (non-Delaunay) triangulation; a seeded generator keeps the result
+// reproducible. With `remember` it is the remembering stochastic walk (Devillers, Pion and
+// Teillaud, "Walking in a triangulation"): it skips the edge it came through, which has p on
+// its inner side already, so each step after the first tests at most two edges; it stops
+// where the plain walk would (p inside or on the triangle, or across a hull edge), by the
+// same exact signs. It terminates in a Delaunay triangulation; for any other (a constrained
+// one) its step count is capped, and past the cap the plain walk continues, whose
 // termination with probability 1 holds in any triangulation.
-ConstrainedDelaunay2::TriangleId ConstrainedDelaunay2::walk_remembering(const Point2& p, TriangleId start,
-                                                                        VertexId* equal_vertex) const {
+ConstrainedDelaunay2::TriangleId ConstrainedDelaunay2::walk(const Point2& p, TriangleId start,
+                                                            VertexId* equal_vertex, bool remember) const {
   TriangleId t = start;
   if (t == none || t >= flags_.size() || (flags_[t] & dead_flag)) t = last_;
   if (flags_[t] & ghost_flag) {
@@ -223,10 +184,10 @@ ConstrainedDelaunay2::TriangleId ConstrainedDelaunay2::walk_remembering(const Po
   static constexpr std::uint32_t plus[5] = {0, 1, 2, 0, 1};  // (i + k) % 3 for i, k < 3
   const std::size_t cap = 4 * flags_.size() + 64;
   std::uint32_t state = 0x9e3779b9u;
-  std::uint32_t entry = 3;  // the local index of the edge crossed into t; 3: none
+  std::uint32_t entry = 3;  // with `remember`: the local index of the edge crossed into t
   for (std::size_t step = 0;; ++step) {
     if (flags_[t] & ghost_flag) return t;
-    if (step > cap) return walk(p, t, equal_vertex);
+    if (step > cap) remember = false, entry = 3;
     state ^= state << 13, state ^= state >> 17, state ^= state << 5;
     const std::uint32_t first = state % 3;
     const VertexId* c = &corner_[3 * std::size_t{t}];
@@ -239,7 +200,7 @@ ConstrainedDelaunay2::TriangleId ConstrainedDelaunay2::walk_remembering(const Po
       if (s < 0) {
         const std::uint32_t h = adjacent_[3 * t + i];
         t = h / 3;
-        entry = h % 3;
+        if (remember) entry = h % 3;
         moved = true;
         break;
       }
@@ -252,10 +213,16 @@ ConstrainedDelaunay2::TriangleId ConstrainedDelaunay2::walk_remembering(const Po
   }
 }
 
+ConstrainedDelaunay2::TriangleId ConstrainedDelaunay2::locate(const Point2& p, TriangleId hint) const {
+  if (flags_.empty() || !std::isfinite(p.x) || !std::isfinite(p.y)) return none;
+  VertexId equal = none;
+  return walk(p, hint, &equal);
+}
+
 void ConstrainedDelaunay2::insert_vertex(VertexId v, TriangleId start, bool respect_constraints) {
   const Point2 p = pt(v);
   VertexId equal = none;
-  const TriangleId first = walk_remembering(p, start, &equal);
+  const TriangleId first = walk(p, start, &equal, true);
   if (equal != none) throw_duplicate(equal, v);
   // The cavity: the triangles whose (perturbed) circumcircle holds p, reachable from the
   // one containing p -- without crossing a constrained edge when constraints count. A

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <array>
+#include <bit>
 #include <cmath>
 
 namespace certimesh::generators::detail {
@@ -51,6 +52,15 @@ constexpr std::uint32_t hilbert_index(std::uint32_t x, std::uint32_t y) {
   return (spread_bits(i1) << 1) | spread_bits(i0);
 }
 
+// splitmix64's finaliser (Steele, Lea and Flood): the seeded, documented generator that
+// assigns each point index to its round.
+constexpr std::uint64_t mix(std::uint64_t z) {
+  z += 0x9e3779b97f4a7c15u;
+  z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9u;
+  z = (z ^ (z >> 27)) * 0x94d049bb133111ebu;
+  return z ^ (z >> 31);
+}
+
 // floor((v - lo) * scale) clamped to the grid; v >= lo, so the product is >= 0 or NaN
 // (an infinite extent makes scale 0), and NaN goes to the last cell.
 std::uint32_t cell(double v, double lo, double scale) {
@@ -71,16 +81,22 @@ std::vector<std::uint32_t, LargeArrayAllocator<std::uint32_t>> hilbert_order(std
   // the order only steers speed, never a decision).
   const double extent = std::max(x1 - x0, y1 - y0);
   const double scale = extent > 0.0 && std::isfinite(extent) ? double(hilbert_side) / extent : 0.0;
-  // (curve index << 32 | point index), sorted by a stable LSD radix sort on the curve index
-  // (three passes of 11 bits, histograms counted in one pass): equal keys keep index order,
-  // and each pass reads its input sequentially.
+  // (key << 32 | point index), key = (round << 28 | the curve index at 2^14 x 2^14 cells),
+  // sorted by a stable LSD radix sort on the key (three passes of 11 bits, histograms
+  // counted in one pass): equal keys keep index order, and each pass reads its input
+  // sequentially. A point's round: level = (trailing zero bits of mix(index)) / 2, so
+  // P(level >= k) = 4^-k, capped at `rounds`; higher levels are inserted first.
   std::vector<std::uint64_t, LargeArrayAllocator<std::uint64_t>> item(points.size()), scratch(points.size());
   constexpr int digit_bits = 11, passes = 3;
   constexpr std::size_t buckets = std::size_t{1} << digit_bits;
   std::vector<std::array<std::uint32_t, buckets>> count(passes);
   for (auto& c : count) c.fill(0);
+  int rounds = 0;  // floor(log4(n / 64)), at most 12
+  while (rounds < 12 && (std::size_t{64} << (2 * (rounds + 1))) <= points.size()) ++rounds;
   for (std::size_t i = 0; i < points.size(); ++i) {
-    const std::uint32_t key = hilbert_index(cell(points[i].x, x0, scale), cell(points[i].y, y0, scale));
+    const std::uint32_t curve = hilbert_index(cell(points[i].x, x0, scale), cell(points[i].y, y0, scale)) >> 4;
+    const int level = std::min(std::countr_zero(mix(i) | (std::uint64_t{1} << 62)) / 2, rounds);
+    const std::uint32_t key = (static_cast<std::uint32_t>(rounds - level) << 28) | curve;
     item[i] = (std::uint64_t{key} << 32) | i;
     for (int p = 0; p < passes; ++p) ++count[p][(key >> (digit_bits * p)) & (buckets - 1)];
   }

@@ -118,8 +118,7 @@ class ConstrainedDelaunay2 {
   void insert_vertex(VertexId v, TriangleId start, bool respect_constraints);
   void dig_cavity(const Point2& p, VertexId v, bool respect_constraints);  // fills cavity_, boundary_
   void finish_star(VertexId v);  // replaces the cavity by the star of v
-  TriangleId walk(const Point2& p, TriangleId start, VertexId* equal_vertex) const;
-  TriangleId walk_remembering(const Point2& p, TriangleId start, VertexId* equal_vertex) const;
+  TriangleId walk(const Point2& p, TriangleId start, VertexId* equal_vertex, bool remember = false) const;
   bool in_circle(TriangleId t, const Point2& p, VertexId pid) const;
   TriangleId new_slot();
   void link(std::uint32_t half_edge_a, std::uint32_t half_edge_b);
