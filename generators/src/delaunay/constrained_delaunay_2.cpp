@@ -1,8 +1,9 @@
-// Incremental Bowyer-Watson insertion in Hilbert order over a triangulation closed by ghost
-// triangles; constraints recovered by flips (Sloan's method: flip crossing edges of convex
-// quadrilaterals until none crosses, then Lawson flips restore the constrained Delaunay
-// property). Every sign is exact; symbolic perturbation makes the input generic, so the
-// triangulation is unique and the same for every input order.
+// Incremental Bowyer-Watson insertion in a biased randomized Hilbert order (hilbert_order.h)
+// over a triangulation closed by ghost triangles; constraints recovered by flips (Sloan's
+// method: flip crossing edges of convex quadrilaterals until none crosses, then Lawson flips
+// restore the constrained Delaunay property). Every sign is exact; symbolic perturbation
+// makes the input generic, so the triangulation is unique and the same for every input
+// order.
 #include "certimesh/generators/delaunay/constrained_delaunay_2.h"
 
 #include <algorithm>
