@@ -141,15 +141,17 @@ Sign compensated_sign(const std::array<double, 6>& h, const std::array<double, 6
 // *decided to false when the preconditions fail.
 Sign small_integer_incircle(const std::array<double, 8>& raw, bool* decided) {
   constexpr double magic = 0x1.8p52, coordinate_limit = 0x1p51, difference_limit = 0x1p12;
-  bool ok = true;
-  for (double v : raw) ok &= (std::fabs(v) <= coordinate_limit) & ((v + magic) - magic == v);
+  *decided = false;
+  // Early exits: on input that is not small integers (the common case of this stage's
+  // callers) the first coordinate usually ends it.
+  for (double v : raw)
+    if (!(std::fabs(v) <= coordinate_limit) || (v + magic) - magic != v) return Sign::zero;
   std::array<double, 6> h;
   for (std::size_t i = 0; i < 6; ++i) {
     h[i] = raw[i] - raw[6 + i % 2];
-    ok &= std::fabs(h[i]) <= difference_limit;
+    if (!(std::fabs(h[i]) <= difference_limit)) return Sign::zero;
   }
-  *decided = ok;
-  if (!ok) return Sign::zero;
+  *decided = true;
   double det = 0.0;
   for (const Cycle& cyc : cycles) {
     const std::size_t p = 2 * cyc.p, q = 2 * cyc.q, r = 2 * cyc.r;
