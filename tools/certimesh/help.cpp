@@ -23,7 +23,9 @@ std::string mesh_help() {
          "Meshes a 2D domain with triangles, certifies the mesh against the domain with the\n"
          "independent checker, and writes it only if the certificate holds.\n"
          "\n"
-         "  DOMAIN               a .poly file, or builtin:plate, builtin:square, builtin:two-holes\n"
+         "  DOMAIN               a .poly file, or builtin:plate, builtin:square, builtin:two-holes;\n"
+         "                       a .node file of 2D points (no segments) is meshed as the\n"
+         "                       Delaunay triangulation of its convex hull, every point a vertex\n"
          "  -o, --output OUT     the mesh (required); format by extension: " +
          std::string(kMeshOutputExtensions) +
          "\n"

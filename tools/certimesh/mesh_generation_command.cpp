@@ -3,6 +3,7 @@
 // the independent checker and writes nothing unless the certificate holds.
 #include <unistd.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <exception>
@@ -10,9 +11,11 @@
 #include <optional>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 #include "certimesh/certificate/check_mesh.h"
 #include "certimesh/generators/delaunay/constrained_delaunay_2.h"
+#include "certimesh/generators/delaunay/point_set_2.h"
 #include "certimesh/generators/domain/default_domains.h"
 #include "certimesh/generators/domain/domain_problem.h"
 #include "certimesh/generators/domain/domain_validation.h"
@@ -20,6 +23,7 @@
 #include "certimesh/io/format_error.h"
 #include "certimesh/io/mesh_file.h"
 #include "certimesh/io/svg_picture.h"
+#include "certimesh/predicates/orient2d.h"
 #include "cli.h"
 
 #ifndef CERTIMESH_VERSION
@@ -105,6 +109,62 @@ void write_outputs(const MeshOptions& options, const io::MeshData& mesh, const i
   if (!options.save_domain.empty()) io::write_mesh(domain, options.save_domain);
 }
 
+// The convex hull of a point set as a domain, for the certificate: Andrew's monotone chain with
+// exact orient2d, points on a hull edge kept as domain vertices (they are mesh vertices). It
+// shares no code with the triangulation it certifies.
+io::MeshData convex_hull_domain(const io::MeshData& points) {
+  std::vector<io::Index> order(points.point_count());
+  for (io::Index i = 0; i < order.size(); ++i) order[i] = i;
+  auto at = [&](io::Index v) { return predicates::Point2{points.coordinates[2 * v], points.coordinates[2 * v + 1]}; };
+  std::sort(order.begin(), order.end(), [&](io::Index a, io::Index b) { return at(a).x != at(b).x ? at(a).x < at(b).x : at(a).y < at(b).y; });
+  std::vector<io::Index> hull;
+  for (int pass = 0; pass < 2; ++pass, std::reverse(order.begin(), order.end())) {  // lower, then upper chain
+    const std::size_t base = hull.size();
+    for (io::Index v : order) {
+      while (hull.size() >= base + 2 && predicates::orient2d(at(hull[hull.size() - 2]), at(hull.back()), at(v)) == predicates::Sign::negative)
+        hull.pop_back();
+      hull.push_back(v);
+    }
+    hull.pop_back();  // the chain's last point starts the other chain
+  }
+  io::MeshData domain;
+  domain.dimension = 2;
+  domain.coordinates = points.coordinates;
+  for (std::size_t i = 0; i < hull.size(); ++i) {
+    domain.segments.push_back(hull[i]);
+    domain.segments.push_back(hull[(i + 1) % hull.size()]);
+  }
+  domain.segment_labels.assign(domain.segment_count(), 0);
+  return domain;
+}
+
+// A point set (a .node file: points, no segments): its Delaunay triangulation, the convex hull
+// meshed as Triangle does for a .node, certified against the hull before anything is written.
+int mesh_point_set(const MeshOptions& options, const io::MeshData& points) {
+  if (points.dimension != 2) {
+    std::fprintf(stderr, "error: %s: a %d-dimensional point set: only 2D point sets are meshed so far\n",
+                 options.domain.c_str(), points.dimension);
+    return 2;
+  }
+  const io::MeshData mesh = generators::delaunay_of_points(points);
+  const io::MeshData hull = convex_hull_domain(points);
+  const certificate::Report report = certificate::check_mesh(mesh, &hull);
+  std::printf("mesh: %zu vertices (%zu on the convex hull), %zu triangles: the Delaunay triangulation of the points\n",
+              mesh.point_count(), hull.segment_count(), mesh.triangle_count());
+  std::printf("quality 12*sqrt(3)*area/perimeter^2: worst %.4f\ncertificate: %s\n", report.statistics.worst_quality,
+              report.valid ? "valid, the triangles tile the convex hull exactly once" : "INVALID");
+  if (!report.valid) {
+    std::fprintf(stderr, "error: internal: the triangulation fails its certificate: %s (nothing written)\n", report.finding.message.c_str());
+    return 3;
+  }
+  write_outputs(options, mesh, hull, report);
+  return 0;
+}
+
+bool is_point_set(const io::MeshData& m) {
+  return m.segments.empty() && m.triangles.empty() && m.tetrahedra.empty() && m.point_count() > 0;
+}
+
 }  // namespace
 
 int run_mesh(const MeshOptions& options) {
@@ -116,6 +176,10 @@ int run_mesh(const MeshOptions& options) {
   mesh_options.size.growth = options.gamma;
   mesh_options.improve = options.improve;
   try {
+    if (options.domain.rfind(kBuiltinPrefix, 0) != 0) {
+      const io::MeshData input = io::read_mesh(options.domain);
+      if (is_point_set(input)) return mesh_point_set(options, input);
+    }
     const PlanarDomain domain = load_domain(options.domain);
     const io::MeshData domain_data = generators::to_mesh_data(domain);
     const generators::MeshDomainResult2 result =
@@ -133,6 +197,8 @@ int run_mesh(const MeshOptions& options) {
     return 0;
   } catch (const generators::InvalidDomain& e) {
     return refuse_domain(options.domain, e);
+  } catch (const generators::DelaunayError& e) {
+    std::fprintf(stderr, "error: %s: %s\n", options.domain.c_str(), e.what());
   } catch (const io::FormatError& e) {
     std::fprintf(stderr, "error: %s\n", e.what());
   } catch (const std::invalid_argument& e) {
