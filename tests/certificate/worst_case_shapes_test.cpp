@@ -61,9 +61,15 @@ TEST(WorstCaseShapes, AHolePointPerHole) {
   MeshData inside = domain;  // a hole point moved into a meshed square
   inside.holes[0] += 1;
   EXPECT_EQ(defect_of(m, &inside), "hole_covered");
-  MeshData on_edge = domain;  // a hole point on a mesh boundary edge
+  MeshData on_edge = domain;  // a hole point on a vertical mesh boundary edge
   on_edge.holes[0] += 0.5;
   EXPECT_EQ(defect_of(m, &on_edge), "hole_covered");
+  MeshData on_horizontal = domain;  // on a horizontal one (the sweep line runs along it)
+  on_horizontal.holes[1] += 0.5;
+  EXPECT_EQ(defect_of(m, &on_horizontal), "hole_covered");
+  MeshData at_corner = domain;  // at a corner of a hole square: a mesh vertex
+  at_corner.holes[0] += 0.5, at_corner.holes[1] += 0.5;
+  EXPECT_EQ(defect_of(m, &at_corner), "hole_covered");
 }
 
 TEST(WorstCaseShapes, NestedRings) {
