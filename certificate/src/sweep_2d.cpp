@@ -36,9 +36,10 @@ struct Segment {
   int weight;     // leftward-ray crossing sign of the oriented segment
 };
 
-struct Key {
+struct Key {  // the segment itself, not only its index: a comparison touches no other memory
   std::uint32_t segment;
   int weight;
+  Segment s;
 };
 
 // The comparison needs the segments and a place to record a contact it notices.
@@ -59,8 +60,8 @@ struct LeftOf {
     if (a.segment == b.segment) return false;
     if (a.segment == UINT32_MAX) return point_left_of(b);
     if (b.segment == UINT32_MAX) return !point_left_of(a);
-    const Segment& e = (*context->segments)[a.segment];
-    const Segment& f = (*context->segments)[b.segment];
+    const Segment& e = a.s;
+    const Segment& f = b.s;
     // Decide at the later lower end: it lies on the sweep line where both cross it.
     const bool e_later = !lex_less(e.lo, f.lo);
     const Segment& later = e_later ? e : f;
@@ -74,7 +75,7 @@ struct LeftOf {
     return (s == Sign::positive) == e_later;  // the later one is left of the other
   }
   bool point_left_of(const Key& k) const {
-    const Segment& f = (*context->segments)[k.segment];
+    const Segment& f = k.s;
     const Sign s = side(f, context->point);
     return s != Sign::negative;  // on f: at its lower end (or inside it), a point just left of it
   }
@@ -193,7 +194,7 @@ class Sweep {
   }
   Status::iterator before(Status::iterator it) { return it == status_.begin() ? status_.end() : std::prev(it); }
   void enter(std::uint32_t f) {
-    const auto it = status_.insert(Key{f, segments_[f].weight}).first;
+    const auto it = status_.insert(Key{f, segments_[f].weight, segments_[f]}).first;
     where_[f] = it;
     test(before(it), it);
     test(it, std::next(it));
@@ -212,8 +213,7 @@ class Sweep {
     for (auto node = status_.node_begin(); node != status_.node_end();) {
       const Key& k = **node;
       if (left_of.point_left_of(k)) {
-        if (predicates::orient2d(segments_[k.segment].lo, segments_[k.segment].hi, q) == Sign::zero &&
-            !(segments_[k.segment].lo == q))
+        if (predicates::orient2d(k.s.lo, k.s.hi, q) == Sign::zero && !(k.s.lo == q))
           out.on_facet = true;
         node = node.get_l_child();
         continue;
