@@ -25,7 +25,7 @@ Quality is computed here, for both meshes with the same formula: the project's s
 Standard library only (and /usr/bin/python3); failures are reported, never fatal.
 Usage:
   python3 bench/planar_examples.py --certimesh build/bin/certimesh \
-      --out bench/results/planar_examples.md [--only NAME ...] [--timeout 60]
+      --out bench/results/planar_examples.md [--only NAME ...] [--timeout 120]
 """
 
 import argparse
@@ -34,6 +34,7 @@ import math
 import os
 import platform
 import re
+import shlex
 import subprocess
 import sys
 import tempfile
@@ -794,7 +795,7 @@ def main():
     info = provenance(args.certimesh)
     if args.describe:
         info["certimesh"] = args.describe
-    command = "python3 bench/planar_examples.py " + " ".join(sys.argv[1:])
+    command = "python3 bench/planar_examples.py " + shlex.join(sys.argv[1:])
     text = ("Run %s; certimesh %s; %s; load average %s before, %s after; %s.\n\n"
             "```sh\n%s\n```\n\n" % (info["date"], info["certimesh"], info["gmsh"].replace("\n", " "),
                                   load_before, info["load"], info["machine"], command)
