@@ -68,7 +68,9 @@ Finding load_domain(const io::MeshData& data, int dim, Domain& d) {
     const bool flat = dim == 2 ? p[0] == p[1] : cross(minus(p[1], p[0]), minus(p[2], p[0])) == Vec{0, 0, 0};
     if (flat) return invalid("facet " + std::to_string(f) + " is degenerate", static_cast<std::int64_t>(f));
   }
-  std::vector<std::pair<Edge, bool>> edges;  // 3D: a closed surface, every edge in exactly two triangles
+  // 3D: closed shells, every edge in an even number of triangles (two; more where shells touch
+  // along an edge: design decision 8); oriented when every edge is used as often each way.
+  std::vector<std::pair<Edge, bool>> edges;
   for (std::size_t f = 0; dim == 3 && f < d.facets.size(); ++f)
     for (int i = 0; i < 3; ++i) {
       const Index u = d.facets.facet(f)[i], w = d.facets.facet(f)[(i + 1) % 3];
@@ -78,8 +80,9 @@ Finding load_domain(const io::MeshData& data, int dim, Domain& d) {
   d.oriented = dim == 3;
   for (std::size_t i = 0, j = 0; i < edges.size(); i = j) {
     while (j < edges.size() && edges[j].first == edges[i].first) ++j;
-    if (j - i != 2) return invalid("is not a closed surface: edge (" + std::to_string(edges[i].first.first) + ", " + std::to_string(edges[i].first.second) + ") is in " + std::to_string(j - i) + " triangle(s)");
-    d.oriented = d.oriented && edges[i].second != edges[i + 1].second;
+    if ((j - i) % 2 != 0) return invalid("is not a closed surface: edge (" + std::to_string(edges[i].first.first) + ", " + std::to_string(edges[i].first.second) + ") is in " + std::to_string(j - i) + " triangle(s)");
+    const auto forward = std::count_if(edges.begin() + static_cast<std::ptrdiff_t>(i), edges.begin() + static_cast<std::ptrdiff_t>(j), [](const auto& e) { return e.second; });
+    d.oriented = d.oriented && 2 * static_cast<std::size_t>(forward) == j - i;
   }
   Finding c = first_contact(d.geo, d.facets, Defect::invalid_domain, Defect::invalid_domain, "domain facet");
   if (c.defect != Defect::none) c.message = "the domain is not simple: " + c.message;
