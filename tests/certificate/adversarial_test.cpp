@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "certimesh/certificate/check_mesh.h"
+#include "certimesh/fuzz/valid_meshes.h"
 #include "mesh_oracle.h"
 #include "pinch_meshes.h"
 #include "unit_meshes.h"
@@ -382,6 +383,42 @@ TEST(CertificateAdversary, DomainPinchesMeshDoesNot) {
   ASSERT_TRUE(check_mesh(three).valid);
   // Its face triangle (1,0,0) (2,1,0) (1,1,0) has every vertex on the domain, no two cubes' faces in common.
   EXPECT_EQ(defect_of(three, &cubes), "facet_off_domain_boundary");
+}
+
+// Item 1 in 3D: the mesh triangles on a domain triangle are all boundary triangles with their
+// elements on one side, or all interior. The grid of [0,2]^3 plus a slab [2, 2 + 2^-20] x
+// [0,1] x [0,2] glued to its face x = 2 is a valid mesh; with a boundary tolerance of 2^-10 the
+// slab's outer vertices count as on that face, so every boundary facet lies on one domain
+// triangle and every boundary vertex on the domain, but the face x = 2 is then covered by
+// interior triangles (where the slab is glued) and by boundary ones (elsewhere, and the slab's
+// outer side): the mesh boundary leaves the face through the tolerance. Refused.
+TEST(CertificateAdversary, DomainTriangleBoundedFromOneSideOnly3d) {
+  MeshData m = kuhn_grid(2);
+  MeshData slab = kept_cubes(2, [](int i, int j, int) { return i == 0 && j == 0; });  // [0,1] x [0,1] x [0,2]
+  const auto first = static_cast<Index>(m.point_count());
+  std::vector<Index> id(slab.point_count());
+  for (Index v = 0; v < slab.point_count(); ++v) {
+    const double* p = &slab.coordinates[3 * v];
+    if (p[0] == 0) {  // on x = 2: the grid's own vertex there
+      id[v] = grid_vertex(2, 2, static_cast<int>(p[1]), static_cast<int>(p[2]));
+      continue;
+    }
+    id[v] = static_cast<Index>(m.point_count());
+    append(m.coordinates, {2 + 0x1p-20, p[1], p[2]});
+  }
+  for (Index v : slab.tetrahedra) m.tetrahedra.push_back(id[v]);
+  ASSERT_GT(m.point_count(), first);
+  ASSERT_TRUE(testing::all_elements_positive(m));
+  ASSERT_TRUE(check_mesh(m).valid) << "alone, a valid mesh of the cube and the slab";
+  const MeshData cube = fuzz::cube_surface_domain(2);
+  ASSERT_TRUE(check_mesh(kuhn_grid(2), &cube).valid);
+  EXPECT_EQ(defect_of(m, &cube), "vertex_off_domain_boundary") << "by the exact rule the slab is off the domain";
+  CheckOptions loose;
+  loose.boundary_tolerance.absolute = 0x1p-10;
+  ASSERT_TRUE(check_mesh(kuhn_grid(2), &cube, loose).valid);
+  const Report r = check_mesh(m, &cube, loose);
+  EXPECT_EQ(defect_name(r.finding.defect), defect_name(Defect::domain_boundary_not_covered)) << r.finding.message;
+  EXPECT_NE(r.finding.message.find("partly by mesh boundary triangles and partly by interior ones"), std::string::npos) << r.finding.message;
 }
 
 }  // namespace
