@@ -421,5 +421,33 @@ TEST(CertificateAdversary, DomainTriangleBoundedFromOneSideOnly3d) {
   EXPECT_NE(r.finding.message.find("partly by mesh boundary triangles and partly by interior ones"), std::string::npos) << r.finding.message;
 }
 
+// The 3D limitation of proofs/mesh_certificate.md section 7, pinned: a tetrahedron touching four
+// others, one at each corner (each the point reflection of it through that corner, so they meet
+// it only there), is a valid tiling, but none of its vertices is off the other components, where
+// their winding numbers would be read: refused, saying why, rather than read at a pinch.
+TEST(CertificateAdversary, ComponentWithEveryVertexShared3d) {
+  MeshData m = simplices(3, {{0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1}});
+  for (Index p = 0; p < 4; ++p) {
+    const auto first = static_cast<Index>(m.point_count());
+    std::vector<Index> tet{p};
+    for (Index q = 0; q < 4; ++q) {
+      if (q == p) continue;
+      for (int k = 0; k < 3; ++k) m.coordinates.push_back(2 * m.coordinates[3 * p + k] - m.coordinates[3 * q + k]);
+      tet.push_back(static_cast<Index>(m.point_count() - 1));
+    }
+    if (testing::oracle_element_sign(m, tet) < 0) std::swap(tet[2], tet[3]);
+    m.tetrahedra.insert(m.tetrahedra.end(), tet.begin(), tet.end());
+    ASSERT_EQ(m.point_count(), first + 3);
+  }
+  ASSERT_TRUE(testing::all_elements_positive(m));
+  const Report r = check_mesh(m);
+  EXPECT_EQ(defect_name(r.finding.defect), defect_name(Defect::non_manifold_boundary));
+  EXPECT_NE(r.finding.message.find("limitation"), std::string::npos) << r.finding.message;
+  MeshData three_corners = m;  // with one corner free the same tiling is certified
+  three_corners.tetrahedra.resize(16);
+  drop_unused_vertices(three_corners);
+  EXPECT_TRUE(check_mesh(three_corners).valid) << check_mesh(three_corners).finding.message;
+}
+
 }  // namespace
 }  // namespace certimesh::certificate::test
