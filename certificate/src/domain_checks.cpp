@@ -30,7 +30,7 @@ struct Domain {
   MeshView geo;     // coordinates only
   FacetSet facets;  // segments (2D) or triangles (3D), domain vertex ids
   BoundaryTolerance tolerance;
-  // 3D: every edge used once in each direction by its two triangles. Then the solid is where
+  // 3D: every edge used as often in each direction by its triangles. Then the solid is where
   // the winding number of the shells is non-zero (design decision 8): an inner shell oriented
   // inward bounds a cavity without a hole point.
   bool oriented = false;
