@@ -30,7 +30,7 @@ struct Domain {
   MeshView geo;     // coordinates only
   FacetSet facets;  // segments (2D) or triangles (3D), domain vertex ids
   BoundaryTolerance tolerance;
-  // 3D: every edge used once in each direction by its two triangles. Then the solid is where
+  // 3D: every edge used as often in each direction by its triangles. Then the solid is where
   // the winding number of the shells is non-zero (design decision 8): an inner shell oriented
   // inward bounds a cavity without a hole point.
   bool oriented = false;
@@ -80,7 +80,9 @@ Finding load_domain(const io::MeshData& data, int dim, Domain& d) {
     for (int i = 0; i < dim; ++i) if (x[i] >= d.geo.vertex_count) return invalid("facet " + std::to_string(f) + " names a missing vertex", static_cast<std::int64_t>(f));
     if (degenerate(d.geo, x)) return invalid("facet " + std::to_string(f) + " is degenerate", static_cast<std::int64_t>(f));
   }
-  std::vector<std::pair<Edge, bool>> edges;  // 3D: a closed surface, every edge in exactly two triangles
+  // 3D: closed shells, every edge in an even number of triangles (two; more where shells touch
+  // along an edge: design decision 8); oriented when every edge is used as often each way.
+  std::vector<std::pair<Edge, bool>> edges;
   for (std::size_t f = 0; dim == 3 && f < d.facets.size(); ++f)
     for (int i = 0; i < 3; ++i) {
       const Index u = d.facets.facet(f)[i], w = d.facets.facet(f)[(i + 1) % 3];
@@ -90,8 +92,9 @@ Finding load_domain(const io::MeshData& data, int dim, Domain& d) {
   d.oriented = dim == 3;
   for (std::size_t i = 0, j = 0; i < edges.size(); i = j) {
     while (j < edges.size() && edges[j].first == edges[i].first) ++j;
-    if (j - i != 2) return invalid("is not a closed surface: edge (" + std::to_string(edges[i].first.first) + ", " + std::to_string(edges[i].first.second) + ") is in " + std::to_string(j - i) + " triangle(s)");
-    d.oriented = d.oriented && edges[i].second != edges[i + 1].second;
+    if ((j - i) % 2 != 0) return invalid("is not a closed surface: edge (" + std::to_string(edges[i].first.first) + ", " + std::to_string(edges[i].first.second) + ") is in " + std::to_string(j - i) + " triangle(s)");
+    const auto forward = std::count_if(edges.begin() + static_cast<std::ptrdiff_t>(i), edges.begin() + static_cast<std::ptrdiff_t>(j), [](const auto& e) { return e.second; });
+    d.oriented = d.oriented && 2 * static_cast<std::size_t>(forward) == j - i;
   }
   Finding c = first_contact(d.geo, d.facets, Defect::invalid_domain, Defect::invalid_domain, "domain facet");
   if (c.defect != Defect::none) c.message = "the domain is not simple: " + c.message;

@@ -29,16 +29,21 @@ struct Components {
   std::vector<Box> box;
   std::vector<int> measure_sign;  // +1 outer, -1 cavity
   std::vector<std::vector<std::size_t>> enclosed_by;  // 3D: components with winding != 0 at vertex
-  // 2D (filled by check_single_cover's sweep): `vertex` is the lowest, then leftmost vertex;
-  // of each facet its component; of each outer component (an island of the mesh), the cavity
-  // component that bounds the unmeshed face around it (-1: the unbounded face).
+  // Of each facet its component. 2D: `vertex` is the lowest, then leftmost vertex v, and
+  // `winding_offset` what to add to W just left of v to get W just counterclockwise of the
+  // component's last edge at v (non-zero only at a pinch: other components' edges between);
+  // filled by check_single_cover's sweep: of each outer component (an island of the mesh), the
+  // cavity component that bounds the unmeshed face around it (-1: the unbounded face). 3D:
+  // `vertex` is on no other component.
   std::vector<std::size_t> of_facet;
+  std::vector<int> winding_offset;
   std::vector<std::int64_t> around;
   // 2D: the same sweep's answers for the domain's hole points, when check_single_cover got them.
   std::vector<SweepAnswer> hole_answers;
 };
 
-/// Condition 4, first half (non_manifold_boundary), and the components.
+/// Condition 4, first half (non_manifold_boundary; two facets leaving a pinch in one direction
+/// are reported as their contact), and the components.
 Finding check_boundary_manifold(const MeshView& m, const FacetSet& boundary, Components& comps);
 
 /// Condition 4, second half (t_junction, boundary_intersection), exact.

@@ -115,11 +115,14 @@ Finding cover_defect(const FacetSet& b, const Components& comps, std::size_t c, 
                      " times (winding numbers " + std::to_string(others) + " and " + std::to_string(inside) + ")");
 }
 
-// 2D: one sweep answers W just left of every component's lowest-leftmost vertex, where the
-// component itself contributes nothing (it lies above and to the right), so W there is
-// W_others; and the first facet left of it, whose component bounds the face around it.
-// An island's ray can only hit a component whose lowest-leftmost vertex comes earlier in
-// that order, so resolving `around` in that order needs no recursion.
+// 2D: one sweep answers W just left of every component's lowest-leftmost vertex v, where the
+// component itself contributes nothing (it lies above and to the right); with the local
+// correction at a pinch (winding_offset: the edges of other components between that point and
+// the component's last edge at v) that is W_others next to the component. For an island the
+// point just left of v is in the unmeshed face around it (the offset is 0), and the first facet
+// left of it bounds that face. An island's ray can only hit a component whose lowest-leftmost
+// vertex comes earlier in that order, so resolving `around` in that order needs no recursion
+// (`around` of a cavity is not used).
 Finding single_cover_2d(const MeshView& m, const FacetSet& b, Components& comps,
                         const std::vector<std::array<double, 2>>& hole_points) {
   const std::size_t n = comps.facets.size();
@@ -136,7 +139,7 @@ Finding single_cover_2d(const MeshView& m, const FacetSet& b, Components& comps,
   std::sort(order.begin(), order.end(), [&](std::size_t x, std::size_t y) { return at[x][1] != at[y][1] ? at[x][1] < at[y][1] : at[x][0] < at[y][0]; });
   comps.around.assign(n, -1);
   for (std::size_t c : order) {
-    if (f = cover_defect(b, comps, c, answers[c].winding); f.defect != Defect::none) return f;
+    if (f = cover_defect(b, comps, c, answers[c].winding + comps.winding_offset[c]); f.defect != Defect::none) return f;
     if (answers[c].left_facet < 0) continue;
     const std::size_t hit = comps.of_facet[static_cast<std::size_t>(answers[c].left_facet)];
     comps.around[c] = comps.measure_sign[hit] < 0 ? static_cast<std::int64_t>(hit) : comps.around[hit];
