@@ -52,7 +52,12 @@ struct Context {
 
 // Whether a point is left of segment f along the sweep line through it (f spans that line):
 // +1 left, -1 right, 0 on f's line (the point is then on f, f spanning the sweep there).
-Sign side(const Segment& f, const Point2& p) { return predicates::orient2d(f.lo, f.hi, p); }
+// An end of f itself is decided without the predicate (its filter cannot certify a zero, so the
+// exact stage would run): the common case at shared endpoints.
+Sign side(const Segment& f, const Point2& p) {
+  if (p == f.lo || p == f.hi) return Sign::zero;
+  return predicates::orient2d(f.lo, f.hi, p);
+}
 
 struct LeftOf {
   Context* context = nullptr;
@@ -66,9 +71,10 @@ struct LeftOf {
     const bool e_later = !lex_less(e.lo, f.lo);
     const Segment& later = e_later ? e : f;
     const Segment& other = e_later ? f : e;
+    const bool same_start = later.lo == other.lo;
     Sign s = side(other, later.lo);
     if (s == Sign::zero) {
-      if (!(later.lo == other.lo)) note(a.segment, b.segment);  // a lower end inside the other
+      if (!same_start) note(a.segment, b.segment);  // a lower end inside the other
       s = side(other, later.hi);
       if (s == Sign::zero) note(a.segment, b.segment), s = a.segment < b.segment ? Sign::positive : Sign::negative;
     }
@@ -213,7 +219,7 @@ class Sweep {
     for (auto node = status_.node_begin(); node != status_.node_end();) {
       const Key& k = **node;
       if (left_of.point_left_of(k)) {
-        if (predicates::orient2d(k.s.lo, k.s.hi, q) == Sign::zero && !(k.s.lo == q))
+        if (side(k.s, q) == Sign::zero && !(k.s.lo == q))
           out.on_facet = true;
         node = node.get_l_child();
         continue;
