@@ -1,0 +1,309 @@
+#!/usr/bin/env python3
+"""`certimesh mesh DOMAIN --min-angle A` (issue 12, item 11): every inside triangle's smallest
+angle is at least A degrees, or the triangle is exempt, checked here against an oracle that
+shares nothing with the code under test:
+
+- angles from the written coordinates in exact rational arithmetic (Python fractions): the
+  angle at o of triangle (o, u, w) is >= A iff dot <= 0 or dot^2 <= cos^2(A) |ou|^2 |ow|^2, with
+  cos^2(A) from 50-digit decimals and A lowered by 1e-9 degrees (the mesher measures angles
+  with atan2 in double, a few ulps);
+- the exemption recomputed from the input geometry, exactly as docs/min_angle.md and
+  `certimesh mesh --help` define it: a shortest edge (u, w) of the triangle (exact squared
+  lengths) joins two vertices that are not input vertices, u on input segment s1 and w on
+  input segment s2 != s1 (on = the segment meets the vertex's rounding box, half-way to the
+  neighbouring doubles, as the certificate decides), s1 and s2 share an end point z, the angle
+  between s1 and s2 at z is below 60 degrees (exact), and |uz|^2, |wz|^2 agree within a factor
+  1.001;
+- termination (a timeout) and exit status 0 (4 would mean the Steiner cap stopped it);
+- `certimesh check OUT --domain DOMAIN` certifies every mesh (a second, independent run of the
+  certificate on the written file).
+
+The domains are built here: the unit square (alone, and with --size 0.07), NACA 0012 with a sharp trailing edge (about 16.5
+degrees) and a thinner one (about 5 degrees), each as the airfoil itself and as a box with the
+airfoil as a hole, a fan of cuts meeting at one vertex at 1 ... 10 degrees, a square with thin
+slits, a square whose bottom is a nearly collinear zigzag chain, and an "A" letter with a hole.
+Usage: min_angle_test.py CERTIMESH DOMAIN [ALGORITHM]
+"""
+import math
+import os
+import subprocess
+import sys
+import tempfile
+from decimal import Decimal, getcontext
+from fractions import Fraction as F
+
+ANGLES = (20.0, 20.7, 25.0, 30.0)
+EXTRA_OPTIONS = {"square_sized": ["--size", "0.07"]}  # a size that is no power of two
+
+
+# ---------------------------------------------------------------- domains
+def polygon_segments(first, count):
+    return [(first + i, first + (i + 1) % count) for i in range(count)]
+
+
+def square():
+    pts = [(0.0, 0.0), (1.0, 0.0), (1.0, 1.0), (0.0, 1.0)]
+    return pts, polygon_segments(0, 4), []
+
+
+def naca(thickness, n=48):
+    def half(x):
+        return 5 * thickness * (0.2969 * math.sqrt(x) - 0.1260 * x - 0.3516 * x * x + 0.2843 * x ** 3 - 0.1036 * x ** 4)
+    xs = [(1 - math.cos(math.pi * i / n)) / 2 for i in range(n + 1)]  # 0 ... 1
+    upper = [(x, half(x)) for x in reversed(xs[1:-1])]                 # from the trailing edge to the nose
+    lower = [(x, -half(x)) for x in xs[1:-1]]
+    return [(1.0, 0.0)] + upper + [(0.0, 0.0)] + lower
+
+
+def airfoil(thickness):
+    pts = naca(thickness)
+    return pts, polygon_segments(0, len(pts)), []
+
+
+def airfoil_in_box(thickness):
+    box = [(-1.0, -1.0), (2.0, -1.0), (2.0, 1.0), (-1.0, 1.0)]
+    foil = naca(thickness)
+    return box + foil, polygon_segments(0, 4) + polygon_segments(4, len(foil)), [(0.3, 0.0)]
+
+
+def fan():
+    # cuts from the centre at gaps of 1, 2, ..., 10 degrees, inside a 36-gon through their ends
+    cut_angles, a = [0.0], 0.0
+    for gap in range(1, 11):
+        a += gap
+        cut_angles.append(a)
+    ring = sorted(set(cut_angles + [float(d) for d in range(60, 360, 10)]))
+    pts = [(0.0, 0.0)] + [(math.cos(math.radians(d)), math.sin(math.radians(d))) for d in ring]
+    segs = polygon_segments(1, len(ring))
+    segs += [(0, 1 + ring.index(d)) for d in cut_angles]
+    return pts, segs, []
+
+
+def slits():
+    pts = [(0.0, 0.0), (1.0, 0.0), (1.0, 1.0), (0.0, 1.0)]
+    segs = polygon_segments(0, 4)
+    holes = []
+    for k, (y, w) in enumerate(((0.3, 2.0 ** -10), (0.6, 2.0 ** -14))):
+        first = len(pts)
+        pts += [(0.2, y), (0.8, y), (0.8, y + w), (0.2, y + w)]
+        segs += polygon_segments(first, 4)
+        holes.append((0.5, y + w / 2))
+    return pts, segs, holes
+
+
+def zigzag():
+    bottom = [(k / 20, (1e-4 if k % 2 else 0.0)) for k in range(21)]
+    pts = bottom + [(1.0, 1.0), (0.0, 1.0)]
+    return pts, polygon_segments(0, len(pts)), []
+
+
+def letter_a():
+    outer = [(0.0, 0.0), (0.2, 0.0), (0.32, 0.3), (0.68, 0.3), (0.8, 0.0), (1.0, 0.0), (0.6, 1.2), (0.4, 1.2)]
+    hole = [(0.38, 0.45), (0.62, 0.45), (0.5, 0.85)]
+    return outer + hole, polygon_segments(0, 8) + polygon_segments(8, 3), [(0.5, 0.6)]
+
+
+DOMAINS = {
+    "square": square,
+    "square_sized": square,
+    "naca0012": lambda: airfoil(0.12),
+    "naca0012_box": lambda: airfoil_in_box(0.12),
+    "naca_5deg": lambda: airfoil(0.036),
+    "naca_5deg_box": lambda: airfoil_in_box(0.036),
+    "fan": fan,
+    "slits": slits,
+    "zigzag": zigzag,
+    "letter_a": letter_a,
+}
+
+
+def write_poly(path, pts, segs, holes):
+    with open(path, "w") as f:
+        f.write(f"{len(pts)} 2 0 0\n")
+        for i, (x, y) in enumerate(pts):
+            f.write(f"{i + 1} {x!r} {y!r}\n")
+        f.write(f"{len(segs)} 0\n")
+        for i, (a, b) in enumerate(segs):
+            f.write(f"{i + 1} {a + 1} {b + 1}\n")
+        f.write(f"{len(holes)}\n")
+        for i, (x, y) in enumerate(holes):
+            f.write(f"{i + 1} {x!r} {y!r}\n")
+
+
+# ---------------------------------------------------------------- reading the mesh
+def read_rows(path):
+    with open(path) as f:
+        return [line.split("#")[0].split() for line in f if line.split("#")[0].strip()]
+
+
+def read_mesh(node_path):
+    rows = read_rows(node_path)
+    n = int(rows[0][0])
+    first = int(rows[1][0])
+    pts = [None] * n
+    for r in rows[1:1 + n]:
+        pts[int(r[0]) - first] = (float(r[1]), float(r[2]))
+    erows = read_rows(node_path[:-5] + ".ele")
+    tris = [tuple(int(x) - first for x in r[1:4]) for r in erows[1:1 + int(erows[0][0])]]
+    return pts, tris
+
+
+# ---------------------------------------------------------------- the oracle
+def cos2(angle_degrees):
+    getcontext().prec = 50
+    # cos by its Taylor series in 50-digit decimals
+    x = Decimal(angle_degrees) * Decimal("3.14159265358979323846264338327950288419716939937510") / 180
+    term, total, k = Decimal(1), Decimal(1), 0
+    while abs(term) > Decimal(10) ** -48:
+        k += 2
+        term = -term * x * x / (k * (k - 1))
+        total += term
+    return F(total * total)
+
+
+def sub(a, b):
+    return (a[0] - b[0], a[1] - b[1])
+
+
+def dot(u, v):
+    return u[0] * v[0] + u[1] * v[1]
+
+
+def angle_at_least(o, u, w, c2):
+    a, b = sub(u, o), sub(w, o)
+    d = dot(a, b)
+    return d <= 0 or d * d <= c2 * dot(a, a) * dot(b, b)
+
+
+def rounding_box(p):
+    return [((F(math.nextafter(c, -math.inf)) + F(c)) / 2, (F(c) + F(math.nextafter(c, math.inf))) / 2) for c in p]
+
+
+def segment_meets_box(a, b, box):
+    (x0, x1), (y0, y1) = box
+    if max(a[0], b[0]) < x0 or min(a[0], b[0]) > x1 or max(a[1], b[1]) < y0 or min(a[1], b[1]) > y1:
+        return False
+    signs = set()
+    for cx in (x0, x1):
+        for cy in (y0, y1):
+            s = (b[0] - a[0]) * (cy - a[1]) - (b[1] - a[1]) * (cx - a[0])
+            signs.add((s > 0) - (s < 0))
+    return not (signs == {1} or signs == {-1})
+
+
+class Exemption:
+    def __init__(self, pts, segs):
+        self.input = {p for p in pts}
+        self.segs = [(tuple(map(F, pts[a])), tuple(map(F, pts[b])), a, b) for a, b in segs]
+        self.pts = pts
+        self.cache = {}
+
+    def segments_of(self, p):
+        if p not in self.cache:
+            box = rounding_box(p)
+            self.cache[p] = [i for i, (a, b, _, _) in enumerate(self.segs) if segment_meets_box(a, b, box)]
+        return self.cache[p]
+
+    def small_input_angle(self, s1, s2):
+        a1, b1, i1, j1 = self.segs[s1]
+        a2, b2, i2, j2 = self.segs[s2]
+        shared = {i1, j1} & {i2, j2}
+        if not shared:
+            return None
+        z = shared.pop()
+        pz = tuple(map(F, self.pts[z]))
+        f1 = b1 if i1 == z else a1
+        f2 = b2 if i2 == z else a2
+        u, v = sub(f1, pz), sub(f2, pz)
+        d = dot(u, v)
+        return pz if d > 0 and 4 * d * d > dot(u, u) * dot(v, v) else None  # angle below 60 degrees
+
+    def exempt(self, corners):
+        exact = [tuple(map(F, c)) for c in corners]
+        sides = [(dot(sub(exact[(i + 1) % 3], exact[(i + 2) % 3]), sub(exact[(i + 1) % 3], exact[(i + 2) % 3])), i)
+                 for i in range(3)]
+        shortest = min(s for s, _ in sides)
+        for length, i in sides:
+            if length > shortest * (1 + F(1, 10 ** 9)):
+                continue
+            u, w = corners[(i + 1) % 3], corners[(i + 2) % 3]
+            if u in self.input or w in self.input:
+                continue
+            for s1 in self.segments_of(u):
+                for s2 in self.segments_of(w):
+                    if s1 == s2:
+                        continue
+                    z = self.small_input_angle(s1, s2)
+                    if z is None:
+                        continue
+                    du = dot(sub(exact[(i + 1) % 3], z), sub(exact[(i + 1) % 3], z))
+                    dw = dot(sub(exact[(i + 2) % 3], z), sub(exact[(i + 2) % 3], z))
+                    if du < F(1001, 1000) * dw and dw < F(1001, 1000) * du:
+                        return True
+        return False
+
+
+def smallest_input_angle(pts, segs):
+    at = {}
+    for a, b in segs:
+        at.setdefault(a, []).append(b)
+        at.setdefault(b, []).append(a)
+    best = 180.0
+    for z, ends in at.items():
+        for i in range(len(ends)):
+            for j in range(i + 1, len(ends)):
+                u, v = sub(pts[ends[i]], pts[z]), sub(pts[ends[j]], pts[z])
+                best = min(best, math.degrees(math.atan2(abs(u[0] * v[1] - u[1] * v[0]), dot(u, v))))
+    return best
+
+
+# ---------------------------------------------------------------- the runs
+def main():
+    certimesh, name = sys.argv[1], sys.argv[2]
+    algorithm = sys.argv[3] if len(sys.argv) > 3 else "delaunay"
+    pts, segs, holes = DOMAINS[name]()
+    oracle = Exemption(pts, segs)
+    failures = []
+    print(f"{name}: {len(pts)} vertices, smallest input angle {smallest_input_angle(pts, segs):.2f} degrees")
+    with tempfile.TemporaryDirectory() as tmp:
+        poly = os.path.join(tmp, name + ".poly")
+        write_poly(poly, pts, segs, holes)
+        for angle in ANGLES:
+            out = os.path.join(tmp, f"{name}_{angle}.node")
+            run = subprocess.run([certimesh, "mesh", poly, "-o", out, "--min-angle", str(angle), "--algorithm",
+                                  algorithm, "--quiet"] + EXTRA_OPTIONS.get(name, []), capture_output=True, text=True, timeout=300)
+            if run.returncode != 0:
+                failures.append(f"A={angle}: exit {run.returncode}: {run.stderr.strip()}")
+                continue
+            check = subprocess.run([certimesh, "check", out, "--domain", poly], capture_output=True, text=True,
+                                   timeout=300)
+            if check.returncode != 0:
+                failures.append(f"A={angle}: certimesh check refuses the mesh: {check.stdout.strip()} {check.stderr.strip()}")
+            mesh_pts, tris = read_mesh(out)
+            c2 = cos2(angle - 1e-9)
+            exempt = below = 0
+            worst = 180.0
+            for t in tris:
+                corners = [mesh_pts[v] for v in t]
+                exact = [tuple(map(F, c)) for c in corners]
+                ok = all(angle_at_least(exact[i], exact[(i + 1) % 3], exact[(i + 2) % 3], c2) for i in range(3))
+                if ok:
+                    continue
+                if oracle.exempt(corners):
+                    exempt += 1
+                    continue
+                below += 1
+                a, b, c = corners
+                worst = min(worst, min(math.degrees(math.acos(max(-1.0, min(1.0, dot(sub(q, o), sub(r, o)) /
+                                                                           math.hypot(*sub(q, o)) / math.hypot(*sub(r, o))))))
+                                       for o, q, r in ((a, b, c), (b, c, a), (c, a, b))))
+            print(f"  A={angle}: {len(tris)} triangles, {exempt} exempt, {below} below the bound")
+            if below:
+                failures.append(f"A={angle}: {below} triangles below {angle} degrees and not exempt (worst {worst:.3f})")
+    for f in failures:
+        print(f"FAIL {name} ({algorithm}): {f}")
+    return 1 if failures else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
