@@ -258,8 +258,77 @@ def smallest_input_angle(pts, segs):
 
 
 # ---------------------------------------------------------------- the runs
+def count_below(mesh_pts, tris, angle, oracle):
+    c2 = cos2(angle - 1e-9)
+    exempt = below = 0
+    for t in tris:
+        exact = [tuple(map(F, mesh_pts[v])) for v in t]
+        if all(angle_at_least(exact[i], exact[(i + 1) % 3], exact[(i + 2) % 3], c2) for i in range(3)):
+            continue
+        if oracle.exempt([mesh_pts[v] for v in t]):
+            exempt += 1
+        else:
+            below += 1
+    return exempt, below
+
+
+def cap_run(certimesh, tmp):
+    """--max-steiner stops the refinement short: exit 4, a warning that counts exactly the
+    triangles the oracle finds below the angle and not exempt, and a written, certified mesh."""
+    pts, segs, holes = fan()
+    poly = os.path.join(tmp, "fan.poly")
+    write_poly(poly, pts, segs, holes)
+    out = os.path.join(tmp, "fan_cap.node")
+    run = subprocess.run([certimesh, "mesh", poly, "-o", out, "--min-angle", "30", "--max-steiner", "5", "--quiet"],
+                         capture_output=True, text=True, timeout=300)
+    failures = []
+    if run.returncode != 4:
+        failures.append(f"cap: exit {run.returncode}, expected 4")
+    if not os.path.exists(out):
+        return failures + ["cap: no mesh written"]
+    _, below = count_below(*read_mesh(out), 30.0, Exemption(pts, segs))
+    if f"warning: --min-angle 30 not met: {below} triangles below it" not in run.stderr or below == 0:
+        failures.append(f"cap: the oracle finds {below} triangles below 30 degrees; stderr says: {run.stderr.strip()}")
+    check = subprocess.run([certimesh, "check", out, "--domain", poly], capture_output=True, text=True, timeout=300)
+    if check.returncode != 0:
+        failures.append(f"cap: certimesh check refuses the mesh: {check.stdout.strip()}")
+    print(f"cap: exit {run.returncode}, {below} triangles below 30 degrees reported")
+    return failures
+
+
+def scale_run(certimesh, tmp):
+    """Scaling the input by 2^-30 and 2^40 scales the --min-angle mesh exactly (shells are powers
+    of two, Steiner points exact-then-rounded): same triangles, coordinates times the scale."""
+    pts, segs, holes = airfoil_in_box(0.036)
+    failures, meshes = [], {}
+    for k in (0, -30, 40):
+        scaled = [(math.ldexp(x, k), math.ldexp(y, k)) for x, y in pts]
+        poly = os.path.join(tmp, f"scaled{k}.poly")
+        write_poly(poly, scaled, segs, [(math.ldexp(x, k), math.ldexp(y, k)) for x, y in holes])
+        out = os.path.join(tmp, f"scaled{k}.node")
+        run = subprocess.run([certimesh, "mesh", poly, "-o", out, "--min-angle", "30", "--algorithm", "delaunay",
+                              "--quiet"], capture_output=True, text=True, timeout=300)
+        if run.returncode != 0:
+            return [f"scale 2^{k}: exit {run.returncode}: {run.stderr.strip()}"]
+        meshes[k] = read_mesh(out)
+    base_pts, base_tris = meshes[0]
+    for k in (-30, 40):
+        p, tris = meshes[k]
+        same = tris == base_tris and p == [(math.ldexp(x, k), math.ldexp(y, k)) for x, y in base_pts]
+        print(f"scale 2^{k}: {len(tris)} triangles, {'identical up to the scale' if same else 'DIFFERENT'}")
+        if not same:
+            failures.append(f"scale 2^{k}: the mesh is not the scaled mesh ({len(tris)} vs {len(base_tris)} triangles)")
+    return failures
+
+
 def main():
     certimesh, name = sys.argv[1], sys.argv[2]
+    if name in ("cap", "scale"):
+        with tempfile.TemporaryDirectory() as tmp:
+            failures = (cap_run if name == "cap" else scale_run)(certimesh, tmp)
+        for f in failures:
+            print(f"FAIL {f}")
+        return 1 if failures else 0
     algorithm = sys.argv[3] if len(sys.argv) > 3 else "delaunay"
     pts, segs, holes = DOMAINS[name]()
     oracle = Exemption(pts, segs)
@@ -280,26 +349,10 @@ def main():
             if check.returncode != 0:
                 failures.append(f"A={angle}: certimesh check refuses the mesh: {check.stdout.strip()} {check.stderr.strip()}")
             mesh_pts, tris = read_mesh(out)
-            c2 = cos2(angle - 1e-9)
-            exempt = below = 0
-            worst = 180.0
-            for t in tris:
-                corners = [mesh_pts[v] for v in t]
-                exact = [tuple(map(F, c)) for c in corners]
-                ok = all(angle_at_least(exact[i], exact[(i + 1) % 3], exact[(i + 2) % 3], c2) for i in range(3))
-                if ok:
-                    continue
-                if oracle.exempt(corners):
-                    exempt += 1
-                    continue
-                below += 1
-                a, b, c = corners
-                worst = min(worst, min(math.degrees(math.acos(max(-1.0, min(1.0, dot(sub(q, o), sub(r, o)) /
-                                                                           math.hypot(*sub(q, o)) / math.hypot(*sub(r, o))))))
-                                       for o, q, r in ((a, b, c), (b, c, a), (c, a, b))))
+            exempt, below = count_below(mesh_pts, tris, angle, oracle)
             print(f"  A={angle}: {len(tris)} triangles, {exempt} exempt, {below} below the bound")
             if below:
-                failures.append(f"A={angle}: {below} triangles below {angle} degrees and not exempt (worst {worst:.3f})")
+                failures.append(f"A={angle}: {below} triangles below {angle} degrees and not exempt")
     for f in failures:
         print(f"FAIL {name} ({algorithm}): {f}")
     return 1 if failures else 0

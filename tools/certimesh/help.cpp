@@ -55,7 +55,8 @@ std::string mesh_help() {
          "                       place the vertices, then the constrained Delaunay\n"
          "                       triangulation of them is refined, so nothing after it lowers\n"
          "                       an angle. Proven to end for A <= 20.7 when no input angle is\n"
-         "                       below 60; in practice up to about 33. Exempt: a triangle whose\n"
+         "                       below 60; in practice up to about 33 (beyond about 34 it\n"
+         "                       rarely ends: the cap stops it). Exempt: a triangle whose\n"
          "                       shortest edge joins two Steiner points on two segments that\n"
          "                       meet at an input vertex at less than 60 degrees, equally far\n"
          "                       from it (within 0.1 % in squared length): the input angle\n"
@@ -71,7 +72,8 @@ std::string mesh_help() {
          "\n"
          "exit status: 0 written; 1 invalid domain; 2 usage error or unreadable input;\n"
          "3 internal error (the mesh failed its certificate; nothing written); 4 written,\n"
-         "but --min-angle not met (the cap was reached; the triangles below it are counted).\n";
+         "but --min-angle not met (the cap was reached, or no admissible Steiner point was\n"
+         "left; the triangles below it are counted on standard error).\n";
 }
 
 std::string check_help() {

@@ -64,7 +64,8 @@ constexpr const char* kHelp =
     "\n"
     "exit status: 0 success; 1 some input line was rejected (predicates), the demo found a\n"
     "disagreement, check found the mesh invalid, or mesh found the domain invalid; 2 usage\n"
-    "error or unreadable input; 3 internal error (a generated mesh failed its certificate).\n";
+    "error or unreadable input; 3 internal error (a generated mesh failed its certificate);\n"
+    "4 mesh written but --min-angle not met (counted on standard error).\n";
 
 int usage_error(const char* fmt, const char* arg) {
   std::fputs("error: ", stderr);
