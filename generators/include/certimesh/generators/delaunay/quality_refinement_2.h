@@ -48,7 +48,7 @@ struct Subsegment2 {
   std::uint32_t segment = 0;   // index into QualityRefinementOptions::segments
 };
 
-/// An input segment: its end vertices (ids < input_vertices) and their coordinates.
+/// An input segment: the ids of its end vertices (input vertices, ids < input_vertices).
 struct InputSegment2 {
   std::uint32_t a = 0, b = 0;
 };
