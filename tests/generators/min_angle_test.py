@@ -21,11 +21,13 @@ shares nothing with the code under test:
 The domains are built here: the unit square (alone, and with --size 0.07), NACA 0012 with a sharp trailing edge (about 16.5
 degrees) and a thinner one (about 5 degrees), each as the airfoil itself and as a box with the
 airfoil as a hole, a fan of cuts meeting at one vertex at 1 ... 10 degrees, a square with thin
-slits, a square whose bottom is a nearly collinear zigzag chain, and an "A" letter with a hole.
+slits, a square whose bottom is a nearly collinear zigzag chain, an "A" letter with a hole, and
+eight random star-shaped 40-gons (input angles down to 0.25 degrees).
 Usage: min_angle_test.py CERTIMESH DOMAIN [ALGORITHM]
 """
 import math
 import os
+import random
 import subprocess
 import sys
 import tempfile
@@ -103,6 +105,14 @@ def letter_a():
     return outer + hole, polygon_segments(0, 8) + polygon_segments(8, 3), [(0.5, 0.6)]
 
 
+def star(seed, n=40):
+    """A random star-shaped 40-gon around (0.5, 0.5): spikes with input angles down to 0.25 degrees."""
+    rng = random.Random(seed)
+    angles = sorted(rng.uniform(0, 2 * math.pi) for _ in range(n))
+    pts = [(0.5 + r * math.cos(a), 0.5 + r * math.sin(a)) for a in angles for r in [rng.uniform(0.05, 0.5)]]
+    return pts, polygon_segments(0, n), []
+
+
 DOMAINS = {
     "square": square,
     "square_sized": square,
@@ -115,6 +125,8 @@ DOMAINS = {
     "zigzag": zigzag,
     "letter_a": letter_a,
 }
+for _seed in range(8):
+    DOMAINS[f"star{_seed}"] = lambda seed=_seed: star(seed)
 
 
 def write_poly(path, pts, segs, holes):
