@@ -22,7 +22,8 @@ The domains are built here: the unit square (alone, and with --size 0.07), NACA 
 degrees) and a thinner one (about 5 degrees), each as the airfoil itself and as a box with the
 airfoil as a hole, a fan of cuts meeting at one vertex at 1 ... 10 degrees, a square with thin
 slits, a square whose bottom is a nearly collinear zigzag chain, an "A" letter with a hole, and
-eight random star-shaped 40-gons (input angles down to 0.25 degrees).
+eight random star-shaped 40-gons (input angles down to 0.25 degrees), and a square cut into two
+regions (labels checked on each side of the interface).
 Usage: min_angle_test.py CERTIMESH DOMAIN [ALGORITHM]
 """
 import math
@@ -35,7 +36,7 @@ from decimal import Decimal, getcontext
 from fractions import Fraction as F
 
 ANGLES = (20.0, 20.7, 25.0, 30.0)
-EXTRA_OPTIONS = {"square_sized": ["--size", "0.07"]}  # a size that is no power of two
+EXTRA_OPTIONS = {"square_sized": ["--size", "0.07"], "two_regions": ["--size", "0.13"]}  # a size that is no power of two
 
 
 # ---------------------------------------------------------------- domains
@@ -113,6 +114,16 @@ def star(seed, n=40):
     return pts, polygon_segments(0, n), []
 
 
+def two_regions():
+    """The unit square cut at x = 0.5 into regions 1 and 2 (an interface the splits must keep
+    apart: every triangle's label must be its side's)."""
+    pts = [(0.0, 0.0), (0.5, 0.0), (1.0, 0.0), (1.0, 1.0), (0.5, 1.0), (0.0, 1.0)]
+    return pts, polygon_segments(0, 6) + [(1, 4)], []
+
+
+REGIONS = {"two_regions": ([(0.25, 0.5, 1), (0.75, 0.5, 2)], lambda x, y: 1 if x < 0.5 else 2)}
+
+
 DOMAINS = {
     "square": square,
     "square_sized": square,
@@ -124,12 +135,13 @@ DOMAINS = {
     "slits": slits,
     "zigzag": zigzag,
     "letter_a": letter_a,
+    "two_regions": two_regions,
 }
 for _seed in range(8):
     DOMAINS[f"star{_seed}"] = lambda seed=_seed: star(seed)
 
 
-def write_poly(path, pts, segs, holes):
+def write_poly(path, pts, segs, holes, regions=()):
     with open(path, "w") as f:
         f.write(f"{len(pts)} 2 0 0\n")
         for i, (x, y) in enumerate(pts):
@@ -140,6 +152,10 @@ def write_poly(path, pts, segs, holes):
         f.write(f"{len(holes)}\n")
         for i, (x, y) in enumerate(holes):
             f.write(f"{i + 1} {x!r} {y!r}\n")
+        if regions:
+            f.write(f"{len(regions)}\n")
+            for i, (x, y, label) in enumerate(regions):
+                f.write(f"{i + 1} {x!r} {y!r} {label} 0\n")
 
 
 # ---------------------------------------------------------------- reading the mesh
@@ -157,7 +173,8 @@ def read_mesh(node_path):
         pts[int(r[0]) - first] = (float(r[1]), float(r[2]))
     erows = read_rows(node_path[:-5] + ".ele")
     tris = [tuple(int(x) - first for x in r[1:4]) for r in erows[1:1 + int(erows[0][0])]]
-    return pts, tris
+    labels = [float(r[4]) if len(r) > 4 else None for r in erows[1:1 + int(erows[0][0])]]
+    return pts, tris, labels
 
 
 # ---------------------------------------------------------------- the oracle
@@ -298,7 +315,7 @@ def cap_run(certimesh, tmp):
         failures.append(f"cap: exit {run.returncode}, expected 4")
     if not os.path.exists(out):
         return failures + ["cap: no mesh written"]
-    _, below = count_below(*read_mesh(out), 30.0, Exemption(pts, segs))
+    _, below = count_below(*read_mesh(out)[:2], 30.0, Exemption(pts, segs))
     if f"warning: --min-angle 30 not met: {below} triangles below it" not in run.stderr or below == 0:
         failures.append(f"cap: the oracle finds {below} triangles below 30 degrees; stderr says: {run.stderr.strip()}")
     check = subprocess.run([certimesh, "check", out, "--domain", poly], capture_output=True, text=True, timeout=300)
@@ -322,7 +339,7 @@ def scale_run(certimesh, tmp):
                               "--quiet"], capture_output=True, text=True, timeout=300)
         if run.returncode != 0:
             return [f"scale 2^{k}: exit {run.returncode}: {run.stderr.strip()}"]
-        meshes[k] = read_mesh(out)
+        meshes[k] = read_mesh(out)[:2]
     base_pts, base_tris = meshes[0]
     for k in (-30, 40):
         p, tris = meshes[k]
@@ -348,7 +365,8 @@ def main():
     print(f"{name}: {len(pts)} vertices, smallest input angle {smallest_input_angle(pts, segs):.2f} degrees")
     with tempfile.TemporaryDirectory() as tmp:
         poly = os.path.join(tmp, name + ".poly")
-        write_poly(poly, pts, segs, holes)
+        regions, side = REGIONS.get(name, ((), None))
+        write_poly(poly, pts, segs, holes, regions)
         for angle in ANGLES:
             out = os.path.join(tmp, f"{name}_{angle}.node")
             run = subprocess.run([certimesh, "mesh", poly, "-o", out, "--min-angle", str(angle), "--algorithm",
@@ -360,8 +378,13 @@ def main():
                                    timeout=300)
             if check.returncode != 0:
                 failures.append(f"A={angle}: certimesh check refuses the mesh: {check.stdout.strip()} {check.stderr.strip()}")
-            mesh_pts, tris = read_mesh(out)
+            mesh_pts, tris, labels = read_mesh(out)
             exempt, below = count_below(mesh_pts, tris, angle, oracle)
+            if side is not None:
+                wrong = sum(1 for t, label in zip(tris, labels)
+                            if label != side(sum(mesh_pts[v][0] for v in t) / 3, sum(mesh_pts[v][1] for v in t) / 3))
+                if wrong:
+                    failures.append(f"A={angle}: {wrong} triangles carry the other region's label")
             print(f"  A={angle}: {len(tris)} triangles, {exempt} exempt, {below} below the bound")
             if below:
                 failures.append(f"A={angle}: {below} triangles below {angle} degrees and not exempt")
