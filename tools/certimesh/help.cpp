@@ -81,7 +81,9 @@ std::string check_help() {
          "                       [--boundary-tolerance D]\n"
          "\n"
          "Certifies MESH exactly: oriented elements, conforming facets, an embedded boundary,\n"
-         "a single cover. A .node MESH reads its elements from the .ele beside it.\n"
+         "a single cover. Pinches are valid (parts sharing a corner, a hole touching the\n"
+         "outer loop, solids sharing a vertex or an edge). A .node MESH reads its elements\n"
+         "from the .ele beside it.\n"
          "\n"
          "  MESH                 " +
          std::string(kMeshInputExtensions) +
