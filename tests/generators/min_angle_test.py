@@ -303,7 +303,8 @@ def count_below(mesh_pts, tris, angle, oracle):
 
 def cap_run(certimesh, tmp):
     """--max-steiner stops the refinement short: exit 4, a warning that counts exactly the
-    triangles the oracle finds below the angle and not exempt, and a written, certified mesh."""
+    triangles the oracle finds below the angle and not exempt, and a written, certified mesh.
+    And a point set with --min-angle is refused (exit 2, nothing written)."""
     pts, segs, holes = fan()
     poly = os.path.join(tmp, "fan.poly")
     write_poly(poly, pts, segs, holes)
@@ -322,6 +323,15 @@ def cap_run(certimesh, tmp):
     if check.returncode != 0:
         failures.append(f"cap: certimesh check refuses the mesh: {check.stdout.strip()}")
     print(f"cap: exit {run.returncode}, {below} triangles below 30 degrees reported")
+    # a point set (.node, no segments) is not refined: --min-angle is refused, not ignored
+    node = os.path.join(tmp, "points.node")
+    with open(node, "w") as f:
+        f.write("4 2 0 0\n1 0 0\n2 1 0\n3 0 1\n4 0.9 0.9\n")
+    refused = os.path.join(tmp, "points_out.ele")
+    run = subprocess.run([certimesh, "mesh", node, "-o", refused, "--min-angle", "20"], capture_output=True, text=True,
+                         timeout=60)
+    if run.returncode != 2 or "error:" not in run.stderr or os.path.exists(refused):
+        failures.append(f"point set with --min-angle: exit {run.returncode}, stderr {run.stderr.strip()!r}")
     return failures
 
 

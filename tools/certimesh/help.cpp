@@ -60,7 +60,8 @@ std::string mesh_help() {
          "                       shortest edge joins two Steiner points on two segments that\n"
          "                       meet at an input vertex at less than 60 degrees, equally far\n"
          "                       from it (within 0.1 % in squared length): the input angle\n"
-         "                       forces it. Angles are measured on the written coordinates\n"
+         "                       forces it. Angles are measured on the written coordinates.\n"
+         "                       Refused for a .node point set\n"
          "  --max-steiner N      Steiner points --min-angle may add before it stops and says so\n"
          "                       (exit status 4) (default: " +
          std::to_string(d.max_steiner) +

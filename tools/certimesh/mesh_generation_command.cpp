@@ -190,7 +190,14 @@ int run_mesh(const MeshOptions& options) {
   try {
     if (options.domain.rfind(kBuiltinPrefix, 0) != 0) {
       const io::MeshData input = io::read_mesh(options.domain);
-      if (is_point_set(input)) return mesh_point_set(options, input);
+      if (is_point_set(input)) {
+        if (options.min_angle > 0.0) {  // not silently ignored: the point set's triangulation is fixed
+          std::fprintf(stderr, "error: %s: --min-angle needs a domain with segments (.poly); a point set is meshed as its Delaunay triangulation only\n",
+                       options.domain.c_str());
+          return 2;
+        }
+        return mesh_point_set(options, input);
+      }
     }
     const PlanarDomain domain = load_domain(options.domain);
     const io::MeshData domain_data = generators::to_mesh_data(domain);
