@@ -77,6 +77,7 @@ struct Generated {
   Triangles triangles;
   std::vector<io::Label> labels;
   std::uint64_t completed_by_delaunay = 0;
+  std::vector<DomainSegment> subsegments;  // empty: the discretized boundary's, unchanged
 };
 
 Generated advancing_front_stage(const detail::DomainTriangulation& dt, const detail::DiscretizedBoundary& boundary,
@@ -87,7 +88,7 @@ Generated advancing_front_stage(const detail::DomainTriangulation& dt, const det
   front_options.max_global_retries = kMaxGlobalRetries;
   AdvancingFrontResult front = advance_front_2(boundary.points, dt.front, front_options, progress);
   clock.lap("advancing front");
-  Generated out{std::move(front.points), std::move(front.triangles), {}, 0};
+  Generated out{std::move(front.points), std::move(front.triangles), {}, 0, {}};
   if (!front.remaining_front.empty()) {
     report(progress, "completion", 0, front.remaining_front.size());
     const Triangles rest = detail::complete_by_delaunay(out.points, front.remaining_front);
@@ -126,8 +127,31 @@ void improvement_stage(Generated& g, const detail::DiscretizedBoundary& boundary
   g.labels = std::move(soup.labels);
 }
 
+// Stage 6: the constrained Delaunay triangulation of the vertices the mesh has so far (none
+// after --algorithm delaunay: then it is the whole Delaunay path, the size included), refined
+// to the smallest angle. The generated triangles are replaced: the earlier stages only chose
+// where the vertices go.
+void quality_stage(const PlanarDomain& domain, const detail::DiscretizedBoundary& boundary,
+                   const MeshDomainOptions2& options, const ProgressCallback& progress, Generated& g,
+                   MeshDomainStats2& stats) {
+  std::vector<std::uint8_t> used(g.points.size(), 0);
+  for (const auto& t : g.triangles)
+    for (const std::uint32_t v : t) used[v] = 1;
+  std::vector<Point2> interior;
+  for (std::size_t v = boundary.points.size(); v < g.points.size(); ++v)
+    if (used[v]) interior.push_back(g.points[v]);
+  const SizePolicy size = g.triangles.empty() ? options.size : SizePolicy{};  // the front met the size
+  detail::RefinedTriangulation refined = detail::refine_domain_quality(
+      domain, boundary, interior, size, options.min_angle, options.max_steiner, progress);
+  stats.quality_refined = true;
+  stats.quality = refined.quality;
+  g = Generated{std::move(refined.points), std::move(refined.triangles), std::move(refined.labels),
+                g.completed_by_delaunay, std::move(refined.subsegments)};
+}
+
 // The output: used vertices only, renumbered in first-use order of their ids (deterministic).
 io::MeshData to_output(const Generated& g, const detail::DiscretizedBoundary& boundary) {
+  const std::vector<DomainSegment>& subsegments = g.subsegments.empty() ? boundary.subsegments : g.subsegments;
   constexpr std::uint32_t unused = UINT32_MAX;
   std::vector<std::uint32_t> new_id(g.points.size(), unused);
   for (std::uint32_t v = 0; v < boundary.points.size(); ++v) new_id[v] = v;  // boundary first, as given
@@ -150,7 +174,7 @@ io::MeshData to_output(const Generated& g, const detail::DiscretizedBoundary& bo
     for (const std::uint32_t v : t) out.triangles.push_back(new_id[v]);
   }
   out.triangle_labels = g.labels;
-  for (const DomainSegment& s : boundary.subsegments) {
+  for (const DomainSegment& s : subsegments) {
     out.segments.push_back(new_id[s.a]);
     out.segments.push_back(new_id[s.b]);
     out.segment_labels.push_back(s.label);
@@ -190,16 +214,21 @@ MeshDomainResult2 mesh_domain_2(const PlanarDomain& domain, const MeshDomainOpti
   const detail::DomainTriangulation dt = detail::triangulate_domain(domain, boundary, progress);
   clock.lap("domain triangulation");
   Generated generated;
+  const bool quality = options.min_angle > 0.0;
   if (options.algorithm == MeshAlgorithm2::advancing_front) {
     generated = advancing_front_stage(dt, boundary, options, progress, clock);
-  } else {
+  } else if (!quality) {
     const detail::RefinedTriangulation refined = detail::refine_domain(domain, boundary, options.size, progress);
-    generated = Generated{refined.points, refined.triangles, refined.labels, 0};
+    generated = Generated{refined.points, refined.triangles, refined.labels, 0, {}};
     clock.lap("delaunay refinement");
   }
-  if (options.improve) {
+  if (options.improve && !generated.triangles.empty()) {
     improvement_stage(generated, boundary, options, progress, result.stats);
     clock.lap("improvement");
+  }
+  if (quality) {
+    quality_stage(domain, boundary, options, progress, generated, result.stats);
+    clock.lap("quality refinement");
   }
   result.mesh = to_output(generated, boundary);
   result.stats.completed_by_delaunay = generated.completed_by_delaunay;

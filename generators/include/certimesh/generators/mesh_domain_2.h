@@ -7,7 +7,11 @@
 //      regions: this decides open loops and empty domains, and gives each region its label;
 //   4. the elements: advancing front (with Delaunay completion of whatever it leaves) or
 //      Delaunay refinement;
-//   5. quality improvement by local modifications, boundary trace kept.
+//   5. quality improvement by local modifications, boundary trace kept;
+//   6. with a minimum angle: the constrained Delaunay triangulation of the mesh's vertices,
+//      refined until every triangle meets the angle or is exempt (quality_refinement_2.h).
+//      It runs last, so nothing after it can lower an angle; after --algorithm delaunay it
+//      replaces stages 4's size-only refinement and 5 (the quality refinement meets the size).
 #pragma once
 
 #include <array>
@@ -15,6 +19,7 @@
 #include <string>
 #include <vector>
 
+#include "certimesh/generators/delaunay/quality_refinement_2.h"
 #include "certimesh/generators/domain/planar_domain.h"
 #include "certimesh/generators/progress.h"
 #include "certimesh/generators/size_policy.h"
@@ -29,6 +34,10 @@ struct MeshDomainOptions2 {
   SizePolicy size;
   bool improve = true;           // run the local-modification improvement
   double target_quality = 0.0;   // 0 = 0.93 after the advancing front, 0.9 after Delaunay refinement
+  /// The smallest angle wanted, degrees, in (0, 60); 0 = no guarantee (stage 6 off).
+  double min_angle = 0.0;
+  /// Stage 6's Steiner point cap (quality_refinement_2.h).
+  std::uint64_t max_steiner = 4'000'000;
 };
 
 struct StageTiming {
@@ -46,6 +55,8 @@ struct MeshDomainStats2 {
   std::uint64_t improvement_operations = 0; // local modifications committed
   double worst_quality = 0.0;
   double mean_quality = 0.0;
+  bool quality_refined = false;             // stage 6 ran; then `quality` says how it ended
+  QualityRefinementStats quality;
   std::vector<StageTiming> timings;
 };
 
