@@ -15,13 +15,13 @@ namespace certimesh::io {
 
 Format format_of(const std::filesystem::path& path) {
   const std::string ext = path.extension().string();
-  if (ext == ".node" || ext == ".ele" || ext == ".face" || ext == ".poly") return Format::triangle;
+  if (ext == ".node" || ext == ".ele" || ext == ".face" || ext == ".poly" || ext == ".smesh") return Format::triangle;
   if (ext == ".mesh") return Format::medit;
   if (ext == ".msh") return Format::gmsh;
   if (ext == ".vtu") return Format::vtu;
   throw FormatError(path.string(), 0,
                     "unknown mesh format '" + ext +
-                        "' (known: .node .ele .face .poly .mesh .msh .vtu)");
+                        "' (known: .node .ele .face .poly .smesh .mesh .msh .vtu)");
 }
 
 MeshData read_mesh(const std::filesystem::path& path) {
@@ -35,7 +35,11 @@ MeshData read_mesh(const std::filesystem::path& path) {
 }
 
 void write_mesh(const MeshData& mesh, const std::filesystem::path& path) {
-  switch (format_of(path)) {
+  const Format format = format_of(path);
+  if (!mesh.facets.empty() && format != Format::triangle) {
+    throw FormatError(path.string(), 0, "the domain's polygonal facets can be written only to a .poly or .smesh file");
+  }
+  switch (format) {
     case Format::triangle: write_triangle_format(mesh, path); return;
     case Format::medit: write_medit_format(mesh, path); return;
     case Format::gmsh: write_gmsh_format(mesh, path); return;

@@ -5,3 +5,10 @@ add_test(NAME certificate.peer_meshes_gmsh
          COMMAND ${CERTIMESH_CERT_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/peer_meshes_test.py $<TARGET_FILE:certimesh>
                  ${CMAKE_CURRENT_BINARY_DIR}/peer_meshes)
 set_tests_properties(certificate.peer_meshes_gmsh PROPERTIES SKIP_RETURN_CODE 77 TIMEOUT 120 LABELS "certificate;interop")
+# TetGen's .poly domains (polygonal facets, facet holes, cavities, regions, an internal facet)
+# meshed by TetGen and certified, and TetGen's meshes broken on purpose refused
+# (tetgen_domains_test.py; skipped, exit 77, when tetgen is absent).
+add_test(NAME certificate.tetgen_domains
+         COMMAND ${CERTIMESH_CERT_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/tetgen_domains_test.py $<TARGET_FILE:certimesh>
+                 ${CMAKE_CURRENT_BINARY_DIR}/tetgen_domains)
+set_tests_properties(certificate.tetgen_domains PROPERTIES SKIP_RETURN_CODE 77 TIMEOUT 120 LABELS "certificate;interop")
