@@ -469,7 +469,7 @@ Finding coverage(const MeshView& m, const FacetSet& b, const Domain& d, const st
     chain.erase(std::unique(chain.begin(), chain.end()), chain.end());
     if (odd != chain)
       return finding(Defect::domain_boundary_not_covered, -1, static_cast<std::int64_t>(f), -1,
-                     std::string(d.polygonal ? "domain facet " : "domain triangle ") + std::to_string(d.polygonal ? f + 1 : f) +
+                     std::string(d.polygonal ? "domain facet " : "domain triangle ") + std::to_string(f) +
                          " is not covered exactly by the mesh triangles on it");
   }
   return m.dim == 2 ? check_segment_chains(m, b, chains, stats) : Finding{};
@@ -547,7 +547,7 @@ Finding holes_and_regions_3d(const MeshView& m, const FacetSet& b, const Compone
     if (covered || w != 0) return hole_covered(h);
     if (innermost != SIZE_MAX) has_hole[innermost] = 1;
     else if (d.polygonal && point_escapes(d.geo, d.facets, p))  // TetGen's rule, as decision 8's in 2D
-      return invalid("has hole point " + std::to_string(h + 1) + " outside the solid (a ray from it leaves the domain crossing no facet)");
+      return invalid("has hole point " + std::to_string(h) + " outside the solid (a ray from it leaves the domain crossing no facet)");
   }
   for (std::size_t c = 0; c < comps.facets.size(); ++c)
     if (comps.measure_sign[c] < 0 && !has_hole[c]) has_hole[c] = cavity_outside_solid(m, b, comps, c, d, on);

@@ -44,7 +44,7 @@ int point_in_loop(const std::vector<Q2>& loop, const Q2& x) {
 
 Finding invalid_facet(std::size_t f, const std::string& why) {
   return finding(Defect::invalid_domain, -1, static_cast<std::int64_t>(f), -1,
-                 "the domain's facet " + std::to_string(f + 1) + " " + why);
+                 "the domain's facet " + std::to_string(f) + " " + why);
 }
 
 // One facet's vertices projected to the coordinate plane that drops the normal's largest axis:
@@ -192,8 +192,8 @@ Finding project_facet(const io::MeshData& d, std::size_t f, Projected& p) {
   const Index b = all[j], c = all[k];
   for (Index x : all)
     if (predicates::orient3d(point(a), point(b), point(c), point(x)) != Sign::zero)
-      return invalid_facet(f, "is not planar: corner " + std::to_string(x + 1) + " is off the plane through corners " + std::to_string(a + 1) +
-                                  ", " + std::to_string(b + 1) + " and " + std::to_string(c + 1));
+      return invalid_facet(f, "is not planar: corner " + std::to_string(x) + " is off the plane through corners " + std::to_string(a) +
+                                  ", " + std::to_string(b) + " and " + std::to_string(c));
   p.origin = vec(a);
   p.normal = cross(minus(vec(b), vec(a)), minus(vec(c), vec(a)));
   int drop = 0;
@@ -256,23 +256,24 @@ Finding cut_facet(const io::MeshData& d, std::size_t f, PolygonalFacets& out) {
     std::size_t count = 0, innermost = L;
     for (std::size_t i = 0; i < L; ++i) {
       const int s = point_in_loop(q[i], at);
-      if (s == 0) return invalid_facet(f, "has facet hole " + std::to_string(h - F.hole_begin(f) + 1) + " on one of its polygons");
+      if (s == 0) return invalid_facet(f, "has facet hole " + std::to_string(h - F.hole_begin(f)) + " on one of its polygons");
       if (s > 0 && (++count, innermost == L || depth[i] > depth[innermost])) innermost = i;
     }
-    if (count == 0) return invalid_facet(f, "has facet hole " + std::to_string(h - F.hole_begin(f) + 1) + " outside all its polygons");
+    if (count == 0) return invalid_facet(f, "has facet hole " + std::to_string(h - F.hole_begin(f)) + " outside all its polygons");
     if (count % 2 == 1)
-      return invalid_facet(f, "has facet hole " + std::to_string(h - F.hole_begin(f) + 1) +
+      return invalid_facet(f, "has facet hole " + std::to_string(h - F.hole_begin(f)) +
                                   " inside its region (inside an odd number of its polygons; a hole is marked inside a polygon that lies in another)");
     marked[innermost] = 1;
   }
   for (std::size_t i = 0; i < L; ++i)
     if (depth[i] % 2 == 1 && !marked[i])
-      return invalid_facet(f, "has polygon " + std::to_string(i + 1) +
+      return invalid_facet(f, "has polygon " + std::to_string(i) +
                                   " inside another of its polygons and no facet hole in it: certimesh reads a facet as the points inside an odd "
                                   "number of its polygons, so a polygon inside another must be a hole (a polygon kept inside a facet is not read yet)");
   // The facet's orientation: that of its first outer polygon as the file lists it.
   std::size_t first_outer = 0;
-  while (depth[first_outer] % 2 == 1) ++first_outer;
+  while (first_outer < L && depth[first_outer] % 2 == 1) ++first_outer;
+  if (first_outer == L) return invalid_facet(f, "has polygons that cross (each lies inside another)");
   const bool flip = area_sign[first_outer] < 0;
   std::vector<std::vector<int>> oriented = p.loops;
   for (std::size_t i = 0; i < L; ++i)
@@ -300,7 +301,7 @@ Finding cut_facet(const io::MeshData& d, std::size_t f, PolygonalFacets& out) {
       std::vector<std::vector<int>> rest;
       for (std::size_t r = k; r < holes.size(); ++r) rest.push_back(oriented[holes[r]]);
       if (!bridge(p, poly, oriented[holes[k]], rest))
-        return invalid_facet(f, "could not be cut into triangles: no vertex of polygon " + std::to_string(i + 1) + " sees hole polygon " + std::to_string(holes[k] + 1));
+        return invalid_facet(f, "could not be cut into triangles: no vertex of polygon " + std::to_string(i) + " sees hole polygon " + std::to_string(holes[k]));
     }
     if (!clip_ears(p, poly, triangles))
       return invalid_facet(f, "could not be cut into triangles (are its polygons simple, and do they cross?)");
@@ -466,12 +467,12 @@ Finding region_labels(const MeshView& m, const io::MeshData& domain, const std::
   for (std::size_t r = 0; r < regions; ++r) {
     if (home[r] < 0)
       return finding(Defect::invalid_domain, -1, static_cast<std::int64_t>(r), -1,
-                     "the domain's region point " + std::to_string(r + 1) + " is outside the solid (in no tetrahedron of the mesh)");
+                     "the domain's region point " + std::to_string(r) + " is outside the solid (in no tetrahedron of the mesh)");
     const std::size_t c = find(static_cast<std::size_t>(home[r]));
     const std::int64_t other = region_of_root[c];
     if (other >= 0 && domain.region_attributes[static_cast<std::size_t>(other)] != domain.region_attributes[r])
       return finding(Defect::invalid_domain, -1, static_cast<std::int64_t>(r), -1,
-                     "the domain's region points " + std::to_string(other + 1) + " and " + std::to_string(r + 1) +
+                     "the domain's region points " + std::to_string(other) + " and " + std::to_string(r) +
                          " lie in one region but give it different attributes");
     region_of_root[c] = static_cast<std::int64_t>(r);
   }
@@ -485,7 +486,7 @@ Finding region_labels(const MeshView& m, const io::MeshData& domain, const std::
     if (static_cast<double>(have) != want)
       return finding(Defect::region_label_mismatch, static_cast<std::int64_t>(e), r, -1,
                      "tetrahedron " + std::to_string(e) + " is labelled " + std::to_string(have) + " but lies in the region of region point " +
-                         std::to_string(r + 1) + ", whose attribute is " + shown +
+                         std::to_string(r) + ", whose attribute is " + shown +
                          (m.labels == nullptr ? " (the mesh has no labels: TetGen writes them with -A)" : ""));
   }
   return {};

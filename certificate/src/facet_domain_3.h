@@ -24,8 +24,9 @@ struct PolygonalFacets {
 };
 
 /// The facets of `domain` (domain.facets non-empty) as triangles; invalid_domain naming the
-/// facet (1-based, as in the file) when one is not planar, has a polygon of fewer than 3 corners,
-/// nested polygons without a facet hole, a facet hole outside its holes, or cannot be cut.
+/// facet (0-based, as every index the certificate reports) when one is not planar, has a
+/// polygon of fewer than 3 corners, nested polygons without a facet hole, a facet hole outside
+/// its holes, or cannot be cut.
 Finding triangulate_facets(const io::MeshData& domain, PolygonalFacets& out);
 
 /// A facet of the domain that the mesh covers on neither side is allowed when both of its sides
