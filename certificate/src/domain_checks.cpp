@@ -204,7 +204,7 @@ Finding vertex_off(const MeshView& m, Index v, const Domain& d) {
   char distance[32];
   std::snprintf(distance, sizeof distance, "%.3g", best);
   return finding(Defect::vertex_off_domain_boundary, -1, static_cast<std::int64_t>(nearest), v,
-                 "boundary vertex " + std::to_string(v) + " " + at + ") is on no domain " + (m.dim == 2 ? "segment" : "triangle") +
+                 "boundary vertex " + std::to_string(v) + " " + at + ") is on no domain " + (m.dim == 2 ? "segment" : (d.polygonal ? "facet" : "triangle")) +
                      ": the nearest, " + std::to_string(nearest) + ", is " + distance + " away" +
                      (m.dim == 3 ? " (from its plane)" : "") +
                      (d.tolerance.active() ? ", beyond the boundary tolerance" : "; the exact rule allows half an ulp per coordinate (see --boundary-tolerance)"));

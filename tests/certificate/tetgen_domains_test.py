@@ -67,6 +67,11 @@ def domains():
               [(8, 9, 10, 11)], [(12, 13, 14, 15)], [(8, 9, 13, 12)], [(9, 10, 14, 13)], [(10, 11, 15, 14)], [(11, 8, 12, 15)]]
     out["window"] = dict(points=win_pts, facets=window, facet_holes={2: [(1, 0, 1.5)]}, holes=[(1, 0.5, 1.5)],
                          regions=[], volume=Fraction(2 * 2 * 3) + Fraction(2 * 2, 2) - 1, switches="-pq")
+    # A slanted top z = 1 + x/3 + y/3, exact at its corners: TetGen's Steiner points on it are
+    # rounded off its plane, so the exact rule refuses them and --boundary-tolerance accepts them.
+    out["slanted"] = dict(points=[(0, 0, 0), (3, 0, 0), (3, 3, 0), (0, 3, 0), (0, 0, 1), (3, 0, 2), (3, 3, 3), (0, 3, 2)],
+                          facets=box_quads(0), facet_holes={}, holes=[], regions=[], volume=Fraction(18),
+                          switches="-pqa0.05")
     return out
 
 
@@ -172,11 +177,14 @@ def main():
             expect("vertex_off_domain_boundary" in out, f"{name}: refused for another reason than rounding: {out}")
             code, out = check(certimesh, stem + ".ele", os.path.join(work, name + ".poly"), "--boundary-tolerance", "1e-12")
         expect(code == 0 and "valid:" in out, f"{name}: TetGen's mesh not certified: {out}")
-        if exact:
+        m = re.search(r"boundary vertices on the domain boundary: (\d+) exactly, (\d+) within", out)
+        rounded = int(m.group(2)) if m else -1
+        if exact and rounded == 0:  # every boundary vertex exactly on its facet: the volume is exact
             expect(vol == d["volume"], f"{name}: TetGen's tetrahedra have volume {vol}, the domain {d['volume']}")
         else:
             expect(abs(vol - d["volume"]) < Fraction(1, 10**9), f"{name}: volume {float(vol)} far from {d['volume']}")
-        print(f"{name}: {len(tets)} tetrahedra, volume {float(vol)}, {'exact' if exact else 'within 1e-12'}: certified")
+        print(f"{name}: {len(tets)} tetrahedra, volume {float(vol)}, {rounded} boundary vertices only within their rounding box,"
+              f" {'exact rule' if exact else '--boundary-tolerance 1e-12'}: certified")
 
     def broken(name, label, points, tets, labels, want):
         stem = os.path.join(work, f"{name}_{label}")
@@ -184,6 +192,21 @@ def main():
         code, out = check(certimesh, stem + ".ele", os.path.join(work, name + ".poly"))
         expect(code == 1 and want in out, f"{name} {label}: expected exit 1 and {want}, got {code}: {out}")
 
+    # TetGen's slanted mesh written with 12 significant digits (as converters and Gmsh's 14
+    # digits do): the Steiner points on the slanted top move off it by more than half an ulp;
+    # the exact rule refuses naming a vertex, the tolerance accepts and says how far they lie.
+    stem, points, tets, _ = meshes["slanted"]
+    short = os.path.join(work, "slanted_12digits")
+    with open(short + ".node", "w") as f:
+        f.write(f"{len(points)} 3 0 0\n")
+        for i, p in enumerate(points):
+            f.write(f"{i + 1} {float(p[0]):.12g} {float(p[1]):.12g} {float(p[2]):.12g}\n")
+    shutil.copy(stem + ".ele", short + ".ele")
+    code, out = check(certimesh, short + ".ele", os.path.join(work, "slanted.poly"))
+    expect(code == 1 and "vertex_off_domain_boundary" in out and "away" in out, f"slanted 12 digits, exact rule: {code}: {out}")
+    code, out = check(certimesh, short + ".ele", os.path.join(work, "slanted.poly"), "--boundary-tolerance", "1e-9")
+    expect(code == 0 and "within the boundary tolerance" in out, f"slanted 12 digits, tolerance 1e-9: {code}: {out}")
+    print("slanted, 12 digits: refused by the exact rule, certified with --boundary-tolerance 1e-9")
     # The cavity filled back in: TetGen meshes the cavity from the mesh's own triangles on its
     # walls (facet markers 7 to 12 in the .face file; -Y: no new points on them), and those
     # tetrahedra join the mesh.
