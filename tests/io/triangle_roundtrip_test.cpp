@@ -173,7 +173,12 @@ TEST(TriangleWrite, FacetsRoundTripThroughSmeshAndAreRefusedElsewhere) {
   EXPECT_TRUE(identical(read_mesh(folder() / "wedge.smesh"), wedge));
   const MeshData pocket = read_mesh(kData / "pocket.poly");
   EXPECT_THROW(write_mesh(pocket, folder() / "pocket.smesh"), FormatError);  // a facet with a hole
-  EXPECT_THROW(write_mesh(pocket, folder() / "pocket.mesh"), FormatError);   // facets would be dropped
+  EXPECT_THROW(write_mesh(pocket, folder() / "pocket.mesh"), FormatError);   // quads: not triangles
+  const MeshData tet = read_mesh(kData / "tetp.poly");                        // four triangles: they convert
+  write_mesh(tet, folder() / "tetp.mesh");
+  const MeshData back = read_mesh(folder() / "tetp.mesh");
+  EXPECT_EQ(back.triangles, tet.facets.corners);
+  EXPECT_EQ(back.triangle_labels, tet.facets.labels);
   write_mesh(pocket, folder() / "pocket.poly");
   EXPECT_TRUE(identical(read_mesh(folder() / "pocket.poly"), pocket));
 }
