@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "mesh_view.h"
+#include "sweep_2d.h"
 
 namespace certimesh::certificate::detail {
 
@@ -33,6 +34,8 @@ struct Components {
   // component that bounds the unmeshed face around it (-1: the unbounded face).
   std::vector<std::size_t> of_facet;
   std::vector<std::int64_t> around;
+  // 2D: the same sweep's answers for the domain's hole points, when check_single_cover got them.
+  std::vector<SweepAnswer> hole_answers;
 };
 
 /// Condition 4, first half (non_manifold_boundary), and the components.
@@ -51,7 +54,10 @@ Finding contact_of(const MeshView& m, const FacetSet& set, std::size_t i, std::s
                    const std::string& what);
 
 /// Condition 5 (multiple_cover): winding numbers of the components at each other's vertices.
-Finding check_single_cover(const MeshView& m, const FacetSet& boundary, Components& comps);
+/// In 2D the sweep that finds them also answers for `hole_points` (the domain's, or none), into
+/// comps.hole_answers, so condition 6 needs no second sweep.
+Finding check_single_cover(const MeshView& m, const FacetSet& boundary, Components& comps,
+                           const std::vector<std::array<double, 2>>& hole_points = {});
 
 /// Exact winding number of component `c` around point `p` (off it); the sign of the area /
 /// volume enclosed by closed oriented facets (filtered, then exact).

@@ -133,6 +133,26 @@ TEST(CertificateAdversary, MeasureDifferenceIsBoundedAndReported) {
   }
 }
 
+// The domain's area is summed exactly even when one polygon mixes exponents 1000 apart (the
+// sum is kept in units of its smallest product, not rounded per term).
+TEST(CertificateAdversary, DomainMeasureIsExactAcrossExponents) {
+  MeshData m;
+  m.dimension = 2;
+  const double big = std::ldexp(1.0, 500), small = std::ldexp(3.0, -500);
+  m.coordinates = {0, 0, big, 0, big, small, 0, 1};
+  m.triangles = {0, 1, 2, 0, 2, 3};  // a convex quadrilateral fanned from vertex 0
+  MeshData d = m;
+  d.triangles.clear();
+  d.segments = {0, 1, 1, 2, 2, 3, 3, 0};
+  const Report r = check_mesh(m, &d);
+  ASSERT_TRUE(r.valid) << r.finding.message;
+  const mpq_class exact = polygon_area(d, {0, 1, 2, 3});  // oracle: the shoelace sum in rationals
+  EXPECT_EQ(exact, mesh_area(m));
+  EXPECT_EQ(r.statistics.domain_measure, exact.get_d());
+  EXPECT_EQ(r.statistics.measure, exact.get_d());
+  EXPECT_EQ(r.statistics.measure_difference, 0.0);
+}
+
 // Statistics at coordinates near 2^900 and 2^-1000: the deviation of the rounded vertex scales
 // with the mesh (it used to read 0: squares overflowed or underflowed).
 TEST(CertificateAdversary, DeviationDoesNotOverflowOrUnderflow) {
