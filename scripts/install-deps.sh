@@ -15,6 +15,7 @@ packages=(
   python3 python3-meshio python3-numpy        # CLI and format tests (/usr/bin/python3)
   time                                        # /usr/bin/time -v in the constant-memory test
   gmsh                                        # interop: Gmsh must read what certimesh writes
+  tetgen                                      # peer: the 3D .poly/.smesh domains, certified
   libssl-dev                                  # SHA-256 of the mesh in the certificate
   zlib1g-dev                                  # compressed .vtu (meshio's default) in io
 )

@@ -14,8 +14,10 @@ namespace {
 detail::MeshView view_of(const io::MeshData& mesh) {
   const int dim = mesh.dimension == 3 ? 3 : 2;
   const auto& cells = dim == 2 ? mesh.triangles : mesh.tetrahedra;
-  return {dim, mesh.coordinates.data(), mesh.coordinates.size() / static_cast<std::size_t>(dim), cells.data(),
-          cells.size() / static_cast<std::size_t>(dim + 1)};
+  const auto& labels = dim == 2 ? mesh.triangle_labels : mesh.tetrahedron_labels;
+  const std::size_t count = cells.size() / static_cast<std::size_t>(dim + 1);
+  return {dim, mesh.coordinates.data(), mesh.coordinates.size() / static_cast<std::size_t>(dim), cells.data(), count,
+          labels.size() == count ? labels.data() : nullptr};
 }
 
 // The domain's hole points for the 2D single-cover sweep to answer for at the same time; none

@@ -12,8 +12,8 @@ std::string_view defect_name(Defect defect) {
       "inconsistent_orientation", "flat_element", "inverted_element", "non_manifold_boundary",
       "t_junction", "boundary_intersection", "multiple_cover", "invalid_domain",
       "facet_off_domain_boundary", "vertex_off_domain_boundary", "domain_boundary_not_covered",
-      "hole_covered", "region_not_meshed"};
-  static_assert(std::size(names) == static_cast<std::size_t>(Defect::region_not_meshed) + 1);
+      "hole_covered", "region_not_meshed", "region_label_mismatch"};
+  static_assert(std::size(names) == static_cast<std::size_t>(Defect::region_label_mismatch) + 1);
   const auto i = static_cast<std::size_t>(defect);
   return i < std::size(names) ? names[i] : "unknown";
 }

@@ -16,6 +16,7 @@
 #include "certimesh/predicates/orient2d.h"
 #include "certimesh/predicates/orient3d.h"
 #include "close_pairs.h"
+#include "facet_domain_3.h"
 #include "on_simplex.h"
 #include "rational.h"
 #include "stages.h"
@@ -36,6 +37,16 @@ struct Domain {
   bool oriented = false;
   std::vector<char> pinned;  // per mesh vertex: it is a domain vertex (domain_vertices_in_mesh)
   std::vector<std::int64_t> mesh_vertex_at;  // per domain vertex: the mesh vertex there, or -1
+  // 3D, TetGen's polygonal facets (facet_domain_3.h): `facets` holds their triangles, and a
+  // face -- what a mesh facet must lie on and what coverage is judged for -- is a whole facet.
+  // Otherwise every segment / triangle is its own face.
+  bool polygonal = false;
+  PolygonalFacets polygons;
+  std::vector<std::size_t> plane_of;  // per face: a triangle of it (its plane, its orientation)
+  std::vector<double> holes;           // the volume hole points (polygonal domains)
+  std::uint32_t face_of(std::size_t t) const { return polygonal ? polygons.facet_of[t] : static_cast<std::uint32_t>(t); }
+  std::size_t face_count() const { return polygonal ? polygons.boundary.size() : facets.size(); }
+  std::size_t plane(std::size_t face) const { return polygonal ? plane_of[face] : face; }
 };
 
 std::vector<Vec> points_of(const MeshView& g, const Index* ids, int count) {
@@ -44,6 +55,7 @@ std::vector<Vec> points_of(const MeshView& g, const Index* ids, int count) {
   return out;
 }
 std::vector<Vec> facet_points(const Domain& d, std::size_t f) { return points_of(d.geo, d.facets.facet(f), d.geo.dim); }
+std::vector<Vec> face_points(const Domain& d, std::size_t face) { return facet_points(d, d.plane(face)); }
 std::array<const double*, 3> corners(const MeshView& g, const Index* ids, int count) {
   std::array<const double*, 3> out{};  // a segment leaves out[2] null
   for (int i = 0; i < count; ++i) out[static_cast<std::size_t>(i)] = g.xyz + static_cast<std::size_t>(ids[i]) * g.dim;
@@ -68,13 +80,22 @@ bool degenerate(const MeshView& g, const Index* x) {
 
 Finding load_domain(const io::MeshData& data, int dim, Domain& d) {
   if (data.dimension != dim) return invalid("has dimension " + std::to_string(data.dimension) + ", the mesh " + std::to_string(dim));
-  d.geo = MeshView{dim, data.coordinates.data(), data.point_count(), nullptr, 0};
-  d.facets = FacetSet{dim, dim == 2 ? data.segments : data.triangles, {}};
-  d.facets.owner.resize(d.facets.vertices.size() / static_cast<std::size_t>(dim));
-  std::iota(d.facets.owner.begin(), d.facets.owner.end(), 0);
-  if (d.facets.size() == 0) return invalid(dim == 2 ? "has no segments" : "has no triangles");
+  d.geo = MeshView{dim, data.coordinates.data(), data.point_count(), nullptr, 0, nullptr};
   for (double x : data.coordinates) if (!std::isfinite(x)) return invalid("has a NaN or infinite coordinate");
   for (double x : data.holes) if (!std::isfinite(x)) return invalid("has a NaN or infinite hole point");
+  for (double x : data.facets.holes) if (!std::isfinite(x)) return invalid("has a NaN or infinite facet hole point");
+  for (double x : data.region_points) if (!std::isfinite(x)) return invalid("has a NaN or infinite region point");
+  d.polygonal = dim == 3 && !data.facets.empty();
+  if (d.polygonal && !data.triangles.empty()) return invalid("has both polygonal facets and triangles");
+  if (d.polygonal)
+    if (Finding e = triangulate_facets(data, d.polygons); e.defect != Defect::none) return e;
+  if (d.polygonal) d.holes = data.holes;
+  d.facets = FacetSet{dim, dim == 2 ? data.segments : (d.polygonal ? d.polygons.triangles : data.triangles), {}};
+  d.facets.owner.resize(d.facets.vertices.size() / static_cast<std::size_t>(dim));
+  std::iota(d.facets.owner.begin(), d.facets.owner.end(), 0);
+  d.plane_of.assign(d.face_count(), 0);
+  for (std::size_t t = d.facets.size(); t-- > 0;) d.plane_of[d.face_of(t)] = t;
+  if (d.facets.size() == 0) return invalid(dim == 2 ? "has no segments" : "has no triangles");
   for (std::size_t f = 0; f < d.facets.size(); ++f) {
     const Index* x = d.facets.facet(f);
     for (int i = 0; i < dim; ++i) if (x[i] >= d.geo.vertex_count) return invalid("facet " + std::to_string(f) + " names a missing vertex", static_cast<std::int64_t>(f));
@@ -92,7 +113,9 @@ Finding load_domain(const io::MeshData& data, int dim, Domain& d) {
   d.oriented = dim == 3;
   for (std::size_t i = 0, j = 0; i < edges.size(); i = j) {
     while (j < edges.size() && edges[j].first == edges[i].first) ++j;
-    if ((j - i) % 2 != 0) return invalid("is not a closed surface: edge (" + std::to_string(edges[i].first.first) + ", " + std::to_string(edges[i].first.second) + ") is in " + std::to_string(j - i) + " triangle(s)");
+    // A closed surface: every edge in an even number of triangles (two, or more at a pinch);
+    // TetGen's facets may also meet three or more at an edge (internal facets). None may end free.
+    if (d.polygonal ? j - i < 2 : (j - i) % 2 != 0) return invalid("is not a closed surface: edge (" + std::to_string(edges[i].first.first) + ", " + std::to_string(edges[i].first.second) + ") is in " + std::to_string(j - i) + " triangle(s)");
     const auto forward = std::count_if(edges.begin() + static_cast<std::ptrdiff_t>(i), edges.begin() + static_cast<std::ptrdiff_t>(j), [](const auto& e) { return e.second; });
     d.oriented = d.oriented && 2 * static_cast<std::size_t>(forward) == j - i;
   }
@@ -168,7 +191,7 @@ std::vector<OnFacet> incidences(const MeshView& m, const Domain& d, const Domain
   for (Index v = 0; v < m.vertex_count; ++v) {
     const std::size_t before = out.size();
     for (std::uint32_t i = match.range[v].first; i < match.range[v].second; ++i)
-      for (std::size_t k = at.offset[match.order[i]]; k < at.offset[match.order[i] + 1]; ++k) out.push_back({v, at.facet[k], true});
+      for (std::size_t k = at.offset[match.order[i]]; k < at.offset[match.order[i] + 1]; ++k) out.push_back({v, d.face_of(at.facet[k]), true});
     if (out.size() == before) unmatched.push_back(v);
   }
   if (!unmatched.empty()) {
@@ -180,12 +203,20 @@ std::vector<OnFacet> incidences(const MeshView& m, const Domain& d, const Domain
       grid.each_overlapping(accepted_bounds(p, m.dim, d.tolerance), [&](std::size_t f) {
         const auto s = corners(d.geo, d.facets.facet(f), m.dim);
         const bool exact = lies_exactly_on(s, m.dim, p);  // then its box meets it
-        if (exact || (!d.pinned[v] && lies_on(s, m.dim, p, d.tolerance))) out.push_back({v, static_cast<std::uint32_t>(f), exact});
+        if (exact || (!d.pinned[v] && lies_on(s, m.dim, p, d.tolerance))) out.push_back({v, d.face_of(f), exact});
       });
     }
   }
   std::sort(out.begin(), out.end());
-  out.erase(std::unique(out.begin(), out.end(), [](const OnFacet& x, const OnFacet& y) { return x.vertex == y.vertex && x.facet == y.facet; }), out.end());
+  std::size_t kept = 0;  // one incidence per (vertex, face), exact if any is: a face's triangles share edges
+  for (std::size_t i = 0; i < out.size(); ++i) {
+    if (kept > 0 && out[kept - 1].vertex == out[i].vertex && out[kept - 1].facet == out[i].facet) {
+      out[kept - 1].exact = out[kept - 1].exact || out[i].exact;
+    } else {
+      out[kept++] = out[i];
+    }
+  }
+  out.resize(kept);
   return out;
 }
 
@@ -193,7 +224,7 @@ std::vector<OnFacet> incidences(const MeshView& m, const Domain& d, const Domain
 // to the final rounding (the deviations are below an ulp, and at coordinates near 2^900 or
 // 2^-1000 the squares would overflow or underflow in double).
 double deviation(const MeshView& m, Index v, const Domain& d, std::size_t f) {
-  const std::vector<Vec> p = facet_points(d, f);
+  const std::vector<Vec> p = face_points(d, f);
   const Vec e = minus(p[1], p[0]), n = m.dim == 2 ? Vec{-e[1], e[0], 0} : cross(e, minus(p[2], p[0]));
   const Q along = dot(n, minus(point_of(m, v), p[0]));
   return sqrt_of(along * along / dot(n, n));
@@ -215,7 +246,7 @@ double distance_to(const MeshView& m, Index v, const Domain& d, std::size_t f) {
 Finding vertex_off(const MeshView& m, Index v, const Domain& d) {
   std::size_t nearest = 0;
   double best = std::numeric_limits<double>::infinity();
-  for (std::size_t f = 0; f < d.facets.size(); ++f)
+  for (std::size_t f = 0; f < d.face_count(); ++f)
     if (const double x = distance_to(m, v, d, f); x < best) best = x, nearest = f;
   std::string at;
   for (int k = 0; k < m.dim; ++k) {
@@ -226,7 +257,7 @@ Finding vertex_off(const MeshView& m, Index v, const Domain& d) {
   char distance[32];
   std::snprintf(distance, sizeof distance, "%.3g", best);
   return finding(Defect::vertex_off_domain_boundary, -1, static_cast<std::int64_t>(nearest), v,
-                 "boundary vertex " + std::to_string(v) + " " + at + ") is on no domain " + (m.dim == 2 ? "segment" : "triangle") +
+                 "boundary vertex " + std::to_string(v) + " " + at + ") is on no domain " + (m.dim == 2 ? "segment" : (d.polygonal ? "facet" : "triangle")) +
                      ": the nearest, " + std::to_string(nearest) + ", is " + distance + " away" +
                      (m.dim == 3 ? " (from its plane)" : "") +
                      (d.tolerance.active() ? ", beyond the boundary tolerance" : "; the exact rule allows half an ulp per coordinate (see --boundary-tolerance)"));
@@ -360,7 +391,7 @@ struct TriangleOnFace {
 };
 
 int side_of(const Domain& d, std::uint32_t face, const predicates::Point3& p) {
-  const Index* t = d.facets.facet(face);
+  const Index* t = d.facets.facet(d.plane(face));
   return static_cast<int>(predicates::orient3d(d.geo.p3(t[0]), d.geo.p3(t[1]), d.geo.p3(t[2]), p));
 }
 
@@ -444,8 +475,24 @@ Finding interfaces_inside_solid(const MeshView& m, const Domain& d, const std::v
 // the mesh facets on it, whose mod-2 boundary must be exactly those chains: a 2-chain with
 // that boundary covers the face an odd number of times, and non-overlapping facets cover once.
 // In 2D the chains then go to check_segment_chains (how each segment is covered).
-Finding coverage(const MeshView& m, const FacetSet& b, const Domain& d, const OnDomain& on,
-                 Statistics& stats) {
+// The domain edges whose mesh-edge chains face f needs, and which of them bound it: a segment;
+// a triangle's three edges; a polygonal facet's every polygon edge, of which those in an odd
+// number of its polygons bound its region (the others are inside it, covered from both sides).
+void face_edges(const Domain& d, std::size_t f, std::vector<Edge>& walked, std::vector<char>& bounding) {
+  walked.clear();
+  bounding.clear();
+  if (d.polygonal) {
+    walked = d.polygons.edges[f];
+    for (const Edge& e : walked) bounding.push_back(std::binary_search(d.polygons.boundary[f].begin(), d.polygons.boundary[f].end(), e));
+    return;
+  }
+  const Index* x = d.facets.facet(f);
+  const int n = d.geo.dim == 2 ? 1 : 3;
+  for (int i = 0; i < n; ++i) walked.push_back({x[i], x[(i + 1) % d.geo.dim]}), bounding.push_back(1);
+}
+
+Finding coverage(const MeshView& m, const FacetSet& b, const Domain& d, const OnDomain& on, Statistics& stats,
+                 std::vector<char>& face_on_facet) {
   std::vector<char> near(m.vertex_count, 0);  // on the domain boundary: only these matter below
   for (const OnFacet& o : on.on) near[o.vertex] = 1;
   const NearEdges edges = mesh_edges(m, near);
@@ -457,6 +504,7 @@ Finding coverage(const MeshView& m, const FacetSet& b, const Domain& d, const On
       if (!near[x[0]] || !near[x[1]] || !near[x[2]]) continue;
       std::sort(x.begin(), x.end());
       if (const std::uint32_t home = on.common(x.data(), 3); home != UINT32_MAX) {
+        face_on_facet[4 * e + static_cast<std::size_t>(i)] = 1;
         on_face.push_back({home, x});
         sides.push_back({home, x, side_of(d, home, m.p3(m.cell(e)[i])), e});
       }
@@ -470,24 +518,31 @@ Finding coverage(const MeshView& m, const FacetSet& b, const Domain& d, const On
   std::vector<std::uint32_t> seen(m.vertex_count, 0);
   std::uint32_t stamp = 0;
   std::vector<SegmentChain> chains;
-  for (std::size_t f = 0; f < d.facets.size(); ++f) {
-    const Index* x = d.facets.facet(f);
+  std::vector<Edge> walked;
+  std::vector<char> bounding;
+  for (std::size_t f = 0; f < d.face_count(); ++f) {
+    // A TetGen facet no mesh face lies on is allowed when the domain's hole points make both
+    // of its sides void (TetGen removes it: the window of its example.poly).
+    if (d.polygonal && (next == on_face.end() || next->first != f) && facet_void_on_both_sides(d.geo, d.facets, d.polygons, static_cast<std::uint32_t>(f), d.holes))
+      continue;
+    face_edges(d, f, walked, bounding);
     std::vector<Edge> chain, edges_on_face, odd;
     std::vector<Index> path;
-    for (int i = 0; i < (m.dim == 2 ? 1 : 3); ++i) {
-      const double* a = d.geo.xyz + static_cast<std::size_t>(x[i]) * m.dim;
-      const double* z = d.geo.xyz + static_cast<std::size_t>(x[(i + 1) % m.dim]) * m.dim;
-      auto on_az = [&](Index w) {  // 2D: the segment's incidence; 3D: also on the triangle's edge az
+    for (std::size_t i = 0; i < walked.size(); ++i) {
+      const auto [from, to] = walked[i];
+      const double* a = d.geo.xyz + static_cast<std::size_t>(from) * m.dim;
+      const double* z = d.geo.xyz + static_cast<std::size_t>(to) * m.dim;
+      auto on_az = [&](Index w) {  // 2D: the segment's incidence; 3D: also on the facet's edge az
         if (!on.has(w, static_cast<std::uint32_t>(f))) return false;
         if (m.dim == 2) return true;
         const double* p = m.xyz + static_cast<std::size_t>(w) * m.dim;
         return lies_exactly_on({a, z, nullptr}, m.dim, p) || (!d.pinned[w] && lies_on({a, z, nullptr}, m.dim, p, d.tolerance));
       };
-      if (!walk(m, edges, d.mesh_vertex_at[x[i]], d.mesh_vertex_at[x[(i + 1) % m.dim]], z, on_az, path, seen, ++stamp))
+      if (!walk(m, edges, d.mesh_vertex_at[from], d.mesh_vertex_at[to], z, on_az, path, seen, ++stamp))
         return finding(Defect::domain_boundary_not_covered, -1, static_cast<std::int64_t>(f), -1,
-                       "domain facet " + std::to_string(f) + ": its edge from domain vertex " + std::to_string(x[i]) + " to " +
-                           std::to_string(x[(i + 1) % m.dim]) + " is not covered by mesh edges on it");
-      for (std::size_t k = 0; k + 1 < path.size(); ++k) chain.push_back(std::minmax(path[k], path[k + 1]));
+                       "domain facet " + std::to_string(f) + ": its edge from domain vertex " + std::to_string(from) + " to " +
+                           std::to_string(to) + " is not covered by mesh edges on it");
+      for (std::size_t k = 0; bounding[i] && k + 1 < path.size(); ++k) chain.push_back(std::minmax(path[k], path[k + 1]));
     }
     if (m.dim == 2) {
       chains.push_back({static_cast<std::int64_t>(f), std::move(path)});
@@ -504,7 +559,8 @@ Finding coverage(const MeshView& m, const FacetSet& b, const Domain& d, const On
     chain.erase(std::unique(chain.begin(), chain.end()), chain.end());
     if (odd != chain)
       return finding(Defect::domain_boundary_not_covered, -1, static_cast<std::int64_t>(f), -1,
-                     "domain triangle " + std::to_string(f) + " is not covered exactly by the mesh boundary triangles on it");
+                     std::string(d.polygonal ? "domain facet " : "domain triangle ") + std::to_string(f) +
+                         " is not covered exactly by the mesh triangles on it");
   }
   return m.dim == 2 ? check_segment_chains(m, b, chains, stats) : Finding{};
 }
@@ -581,6 +637,8 @@ Finding holes_and_regions_3d(const MeshView& m, const FacetSet& b, const Compone
     }
     if (covered || w != 0) return hole_covered(h);
     if (innermost != SIZE_MAX) has_hole[innermost] = 1;
+    else if (d.polygonal && point_escapes(d.geo, d.facets, p))  // TetGen's rule, as decision 8's in 2D
+      return invalid("has hole point " + std::to_string(h) + " outside the solid (a ray from it leaves the domain crossing no facet)");
   }
   for (std::size_t c = 0; c < comps.facets.size(); ++c)
     if (comps.measure_sign[c] < 0 && !has_hole[c]) has_hole[c] = cavity_outside_solid(m, b, comps, c, d, on);
@@ -606,9 +664,11 @@ Finding check_domain(const MeshView& m, const FacetSet& boundary, const Componen
   }
   const OnDomain on(incidences(m, d, match), m.vertex_count);
   f = boundary_on_domain(m, boundary, d, on, stats);
-  if (f.defect == Defect::none) f = coverage(m, boundary, d, on, stats);
+  std::vector<char> face_on_facet(m.dim == 3 ? 4 * m.element_count : 0, 0);
+  if (f.defect == Defect::none) f = coverage(m, boundary, d, on, stats, face_on_facet);
   if (f.defect == Defect::none)
     f = m.dim == 2 ? holes_and_regions_2d(m, boundary, comps, lex_order, domain) : holes_and_regions_3d(m, boundary, comps, d, on, domain);
+  if (f.defect == Defect::none && m.dim == 3) f = region_labels(m, domain, face_on_facet);
   return f;
 }
 

@@ -20,6 +20,7 @@ struct MeshView {
   std::size_t vertex_count = 0;
   const Index* cells = nullptr;  // dim + 1 vertex indices per element
   std::size_t element_count = 0;
+  const io::Label* labels = nullptr;  // one per element, or null (all 0)
 
   int corners() const { return dim + 1; }
   const Index* cell(std::size_t e) const { return cells + e * static_cast<std::size_t>(dim + 1); }

@@ -81,7 +81,7 @@ struct SegmentChain {
 Finding check_segment_chains(const MeshView& m, const FacetSet& boundary, const std::vector<SegmentChain>& chains,
                              Statistics& stats);
 
-/// Condition 6 (invalid_domain .. region_not_meshed, in the order of defect.h) and the
+/// Condition 6 (invalid_domain .. region_label_mismatch, in the order of defect.h) and the
 /// statistics of boundary vertices on the domain boundary.
 Finding check_domain(const MeshView& m, const FacetSet& boundary, const Components& comps,
                      const std::vector<Index>& lex_order, const io::MeshData& domain, const BoundaryTolerance& tolerance,

@@ -3,6 +3,7 @@
 #include <charconv>
 #include <cstdio>
 #include <fstream>
+#include <optional>
 #include <system_error>
 
 #include "certimesh/io/format_error.h"
@@ -15,13 +16,13 @@ namespace certimesh::io {
 
 Format format_of(const std::filesystem::path& path) {
   const std::string ext = path.extension().string();
-  if (ext == ".node" || ext == ".ele" || ext == ".face" || ext == ".poly") return Format::triangle;
+  if (ext == ".node" || ext == ".ele" || ext == ".face" || ext == ".poly" || ext == ".smesh") return Format::triangle;
   if (ext == ".mesh") return Format::medit;
   if (ext == ".msh") return Format::gmsh;
   if (ext == ".vtu") return Format::vtu;
   throw FormatError(path.string(), 0,
                     "unknown mesh format '" + ext +
-                        "' (known: .node .ele .face .poly .mesh .msh .vtu)");
+                        "' (known: .node .ele .face .poly .smesh .mesh .msh .vtu)");
 }
 
 MeshData read_mesh(const std::filesystem::path& path) {
@@ -34,8 +35,37 @@ MeshData read_mesh(const std::filesystem::path& path) {
   throw FormatError(path.string(), 0, "unreachable format");
 }
 
+namespace {
+
+// A facet list whose every facet is one triangle without holes, as boundary triangles (what the
+// other formats can hold); nullopt when a facet is anything else.
+std::optional<MeshData> facets_as_triangles(const MeshData& mesh) {
+  MeshData out = mesh;
+  out.facets = {};
+  const FacetList& f = mesh.facets;
+  for (std::size_t i = 0; i < f.facet_count(); ++i) {
+    const std::uint64_t p = f.polygon_begin(i);
+    if (f.facet_end[i] != p + 1 || f.polygon_end[p] - f.corner_begin(p) != 3 || f.hole_end[i] != f.hole_begin(i)) return std::nullopt;
+    for (std::uint64_t c = f.corner_begin(p); c < f.polygon_end[p]; ++c) out.triangles.push_back(f.corners[c]);
+    if (!f.labels.empty()) out.triangle_labels.push_back(f.labels[i]);
+  }
+  return out;
+}
+
+}  // namespace
+
 void write_mesh(const MeshData& mesh, const std::filesystem::path& path) {
-  switch (format_of(path)) {
+  const Format format = format_of(path);
+  if (!mesh.facets.empty() && format != Format::triangle) {
+    if (!mesh.triangles.empty()) throw FormatError(path.string(), 0, "the domain has both facets and triangles");
+    const std::optional<MeshData> triangles = facets_as_triangles(mesh);
+    if (!triangles) {
+      throw FormatError(path.string(), 0, "the domain's facets are not all triangles: polygonal facets can be written only to a .poly or .smesh file");
+    }
+    write_mesh(*triangles, path);
+    return;
+  }
+  switch (format) {
     case Format::triangle: write_triangle_format(mesh, path); return;
     case Format::medit: write_medit_format(mesh, path); return;
     case Format::gmsh: write_gmsh_format(mesh, path); return;

@@ -52,6 +52,27 @@ inline void check_cells(const std::vector<Index>& cells, const std::vector<Label
   }
 }
 
+/// Refuses a facet list whose offsets or corners contradict each other or the points.
+inline void check_facets(const FacetList& f, std::size_t point_count, const std::string& file) {
+  auto bad = [&](const std::string& why) { throw FormatError(file, 0, "facet list: " + why); };
+  const std::size_t n = f.facet_count();
+  if (f.hole_end.size() != n || (!f.labels.empty() && f.labels.size() != n)) bad("per-facet arrays differ in length");
+  if (f.holes.size() % 3 != 0) bad("facet holes are not 3 coordinates each");
+  check_finite(f.holes, file, "facet hole coordinate");
+  for (std::size_t i = 0; i < n; ++i) {
+    if (f.facet_end[i] < f.polygon_begin(i) || f.facet_end[i] > f.polygon_count()) bad("facet offsets out of order");
+    if (f.hole_end[i] < f.hole_begin(i) || f.hole_end[i] > f.holes.size() / 3) bad("facet hole offsets out of order");
+  }
+  if (n > 0 && f.facet_end.back() != f.polygon_count()) bad("polygons belong to no facet");
+  for (std::size_t p = 0; p < f.polygon_count(); ++p) {
+    if (f.polygon_end[p] <= f.corner_begin(p) || f.polygon_end[p] > f.corners.size()) bad("polygon offsets out of order");
+  }
+  if (f.polygon_count() > 0 && f.polygon_end.back() != f.corners.size()) bad("corners belong to no polygon");
+  for (const Index v : f.corners) {
+    if (v >= point_count) bad("a corner names vertex " + std::to_string(v) + " of " + std::to_string(point_count));
+  }
+}
+
 /// Refuses a MeshData whose arrays contradict each other (FormatError, line 0, naming `file`).
 inline void check_writable(const MeshData& mesh, const std::string& file) {
   if (mesh.dimension != 2 && mesh.dimension != 3) {
@@ -62,9 +83,11 @@ inline void check_writable(const MeshData& mesh, const std::string& file) {
       mesh.region_points.size() % dim != 0) {
     throw FormatError(file, 0, "a coordinate array is not a multiple of the dimension");
   }
-  if (mesh.region_points.size() / dim != mesh.region_attributes.size()) {
-    throw FormatError(file, 0, "region points and region attributes differ in number");
+  if (mesh.region_points.size() / dim != mesh.region_attributes.size() ||
+      (!mesh.region_max_measures.empty() && mesh.region_max_measures.size() != mesh.region_attributes.size())) {
+    throw FormatError(file, 0, "region points, attributes and constraints differ in number");
   }
+  check_finite(mesh.region_max_measures, file, "region constraint");
   check_finite(mesh.coordinates, file, "coordinate");
   check_finite(mesh.holes, file, "hole coordinate");
   check_finite(mesh.region_points, file, "region coordinate");
@@ -77,6 +100,8 @@ inline void check_writable(const MeshData& mesh, const std::string& file) {
   check_cells(mesh.segments, mesh.segment_labels, 2, n, file, "segment");
   check_cells(mesh.triangles, mesh.triangle_labels, 3, n, file, "triangle");
   check_cells(mesh.tetrahedra, mesh.tetrahedron_labels, 4, n, file, "tetrahedron");
+  check_facets(mesh.facets, n, file);
+  if (mesh.dimension == 2 && !mesh.facets.empty()) throw FormatError(file, 0, "a 2D domain cannot hold facets");
   if (mesh.dimension == 2 && !mesh.tetrahedra.empty()) {
     throw FormatError(file, 0, "a 2D mesh cannot hold tetrahedra");
   }

@@ -4,6 +4,7 @@
 // consecutively from 0 or 1. certimesh writes 1-based files.
 #include "certimesh/io/triangle_format.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <fstream>
@@ -172,9 +173,10 @@ void read_cells(TextReader& in, const CellSection& section, const PointNumbering
   detail::drop_all_zero(labels);
 }
 
-// "count", then "id x y [z]" lines (holes), or "id x y [z] attribute [constraint]" (regions).
+// "count", then "id x y [z]" lines (holes), or "id x y [z] attribute [constraint]" (regions:
+// the constraint is the maximum area in 2D, volume in 3D; a missing or negative one is none).
 void read_domain_points(TextReader& in, int dimension, bool with_attribute, std::vector<double>& points,
-                        std::vector<double>* attributes) {
+                        MeshData* regions) {
   const std::string what = with_attribute ? "region" : "hole";
   in.begin_record();
   const auto dim = static_cast<std::size_t>(dimension);
@@ -186,43 +188,87 @@ void read_domain_points(TextReader& in, int dimension, bool with_attribute, std:
     numbers.read(in, h);
     for (std::size_t k = 0; k < dim; ++k) points.push_back(in.read_double(what + " coordinate"));
     if (with_attribute) {
-      attributes->push_back(in.read_double("regional attribute"));
-      if (in.record_has_more()) in.read_double("area or volume constraint");  // not kept
+      regions->region_attributes.push_back(in.read_double("regional attribute"));
+      regions->region_max_measures.push_back(
+          in.record_has_more() ? in.read_double(dimension == 2 ? "maximum area" : "maximum volume") : -1.0);
     }
     in.end_record("the " + what);
   }
-}
-
-// A TetGen facet: "npolygons [nholes [marker]]", then npolygons "3 a b c" lines.
-void read_facet(TextReader& in, const PointNumbering& points, bool with_marker, MeshData& mesh) {
-  in.begin_record();
-  const std::size_t polygons = in.read_count("polygon count", 8);
-  std::int64_t holes = 0;
-  if (in.record_has_more()) holes = in.read_integer("facet hole count", 0, kInt64Max);
-  Label marker = 0;
-  if (with_marker && in.record_has_more()) marker = read_marker(in, "facet marker");
-  in.end_record("the facet header");
-  if (holes != 0) in.fail("facet holes are not supported (certimesh does not triangulate facets)");
-  for (std::size_t p = 0; p < polygons; ++p) {
-    in.begin_record();
-    const auto corners = in.read_integer("polygon corner count", 0, kInt64Max);
-    if (corners != 3) {
-      in.fail("a facet polygon with " + std::to_string(corners) +
-              " corners: certimesh does not triangulate facets, every polygon must be a triangle");
-    }
-    for (int k = 0; k < 3; ++k) mesh.triangles.push_back(read_vertex(in, points, "corner"));
-    in.end_record("the triangle's three corners");
-    mesh.triangle_labels.push_back(marker);
+  if (with_attribute && std::all_of(regions->region_max_measures.begin(), regions->region_max_measures.end(),
+                                    [](double m) { return m < 0; })) {
+    regions->region_max_measures.clear();
   }
 }
 
-void read_facets(TextReader& in, const PointNumbering& points, MeshData& mesh) {
+// One polygon of a facet: "k c1 .. ck", the corners possibly continued on the following lines
+// (TetGen reads them so); in a .smesh the facet's marker follows the last corner on its line.
+void read_polygon(TextReader& in, const PointNumbering& points, FacetList& facets) {
+  in.begin_record();
+  const std::size_t corners = in.read_count("polygon corner count", 2);
+  if (corners == 0) in.fail("a facet polygon with 0 corners");
+  const std::size_t first = facets.corners.size();
+  for (std::size_t k = 0; k < corners; ++k) {
+    if (!in.record_has_more()) in.begin_record();  // the corner list goes on on the next line
+    const Index v = read_vertex(in, points, "corner");
+    for (std::size_t j = first; j < facets.corners.size(); ++j) {
+      if (facets.corners[j] == v) {
+        in.fail("the polygon repeats corner " + std::to_string(points.first + static_cast<std::int64_t>(v)));
+      }
+    }
+    facets.corners.push_back(v);
+  }
+  facets.polygon_end.push_back(facets.corners.size());
+}
+
+// A .poly facet: "npolygons [nholes [marker]]", npolygons polygons, then nholes "id x y z".
+void read_poly_facet(TextReader& in, const PointNumbering& points, bool with_marker, FacetList& facets) {
+  in.begin_record();
+  const std::size_t polygons = in.read_count("polygon count", 2);
+  std::size_t holes = 0;
+  if (in.record_has_more()) holes = in.read_count("facet hole count", 4);
+  Label marker = 0;
+  if (with_marker && in.record_has_more()) marker = read_marker(in, "facet marker");
+  in.end_record("the facet header");
+  for (std::size_t p = 0; p < polygons; ++p) {
+    read_polygon(in, points, facets);
+    in.end_record("the polygon's corners");
+  }
+  RecordNumbers numbers("facet hole");
+  for (std::size_t h = 0; h < holes; ++h) {
+    in.begin_record();
+    numbers.read(in, h);
+    for (int k = 0; k < 3; ++k) facets.holes.push_back(in.read_double("facet hole coordinate"));
+    in.end_record("the facet hole");
+  }
+  facets.facet_end.push_back(facets.polygon_end.size());
+  facets.hole_end.push_back(facets.holes.size() / 3);
+  facets.labels.push_back(marker);
+}
+
+// A .smesh facet: one polygon, "k c1 .. ck [marker]".
+void read_smesh_facet(TextReader& in, const PointNumbering& points, bool with_marker, FacetList& facets) {
+  read_polygon(in, points, facets);
+  Label marker = 0;
+  if (with_marker && in.record_has_more()) marker = read_marker(in, "facet marker");
+  in.end_record("the facet");
+  facets.facet_end.push_back(facets.polygon_end.size());
+  facets.hole_end.push_back(facets.holes.size() / 3);
+  facets.labels.push_back(marker);
+}
+
+void read_facets(TextReader& in, const PointNumbering& points, bool smesh, MeshData& mesh) {
   in.begin_record();
   const std::size_t facets = in.read_count("facet count", 2);
   const auto markers = in.read_integer("facet marker count (0 or 1)", 0, 1);
   in.end_record("the facet header");
-  for (std::size_t f = 0; f < facets; ++f) read_facet(in, points, markers == 1, mesh);
-  detail::drop_all_zero(mesh.triangle_labels);
+  for (std::size_t f = 0; f < facets; ++f) {
+    if (smesh) {
+      read_smesh_facet(in, points, markers == 1, mesh.facets);
+    } else {
+      read_poly_facet(in, points, markers == 1, mesh.facets);
+    }
+  }
+  detail::drop_all_zero(mesh.facets.labels);
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -251,7 +297,10 @@ void expect_end(TextReader& in) {
   if (!in.at_end()) in.fail("unexpected " + TextReader::quoted(in.next_token()) + " after the last record");
 }
 
+// X.poly (2D or 3D) or X.smesh (3D): points (or none, then from X.node), segments or facets,
+// holes, and the optional regions.
 MeshData parse_poly(TextReader& in, const fs::path& main, const CompanionFiles& companions) {
+  const bool smesh = main.extension() == ".smesh";
   MeshData mesh;
   PointNumbering points = read_points(in, mesh);
   if (points.count == 0) {
@@ -265,13 +314,14 @@ MeshData parse_poly(TextReader& in, const fs::path& main, const CompanionFiles& 
                                               std::to_string(mesh.dimension) + "D points");
     }
   }
+  if (smesh && mesh.dimension != 3) throw FormatError(main.string(), 1, "a .smesh file holds a 3D domain, but its points are 2D");
   if (mesh.dimension == 2) {
     read_cells(in, {"segment", 2, false}, points, mesh.segments, mesh.segment_labels);
   } else {
-    read_facets(in, points, mesh);
+    read_facets(in, points, smesh, mesh);
   }
   read_domain_points(in, mesh.dimension, false, mesh.holes, nullptr);
-  if (!in.at_end()) read_domain_points(in, mesh.dimension, true, mesh.region_points, &mesh.region_attributes);
+  if (!in.at_end()) read_domain_points(in, mesh.dimension, true, mesh.region_points, &mesh);
   if (!in.at_end()) in.fail("unexpected " + TextReader::quoted(in.next_token()) + " after the region list");
   return mesh;
 }
@@ -367,7 +417,7 @@ std::string marker_header(std::size_t count, const std::vector<Label>& labels) {
 }
 
 void append_domain_points(std::string& out, const std::vector<double>& points, int dimension,
-                          const std::vector<double>* attributes) {
+                          const MeshData* regions) {
   const auto dim = static_cast<std::size_t>(dimension);
   const std::size_t count = points.size() / dim;
   out += std::to_string(count) + "\n";
@@ -377,35 +427,90 @@ void append_domain_points(std::string& out, const std::vector<double>& points, i
       out += ' ';
       append_double(out, points[h * dim + k]);
     }
-    if (attributes != nullptr) {
+    if (regions != nullptr) {
       out += ' ';
-      append_double(out, (*attributes)[h]);
-      out += " -1";  // no area/volume constraint (Triangle and TetGen need the field)
+      append_double(out, regions->region_attributes[h]);
+      out += ' ';  // the constraint, -1 for none (Triangle and TetGen need the field)
+      append_double(out, regions->region_max_measures.empty() ? -1.0 : regions->region_max_measures[h]);
     }
     out += '\n';
   }
 }
 
-void append_facets(std::string& out, const MeshData& mesh) {
-  out += marker_header(mesh.triangle_count(), mesh.triangle_labels);
-  for (std::size_t t = 0; t < mesh.triangle_count(); ++t) {
-    out += "1";
-    if (!mesh.triangle_labels.empty()) out += " 0 " + std::to_string(mesh.triangle_labels[t]);
-    out += "\n3";
-    for (std::size_t k = 0; k < 3; ++k) {
-      out += ' ';
-      detail::append_integer(out, std::uint64_t{mesh.triangles[t * 3 + k]} + 1);
-    }
-    out += '\n';
+void append_regions(std::string& out, const MeshData& mesh) {
+  append_domain_points(out, mesh.region_points, mesh.dimension, &mesh);
+}
+
+void append_polygon(std::string& out, const FacetList& facets, std::size_t p) {
+  const std::uint64_t begin = facets.corner_begin(p), end = facets.polygon_end[p];
+  detail::append_integer(out, end - begin);
+  for (std::uint64_t c = begin; c < end; ++c) {
+    out += ' ';
+    detail::append_integer(out, std::uint64_t{facets.corners[c]} + 1);
   }
 }
 
-std::string format_poly(const MeshData& mesh, const std::string& name) {
+// The facet list of a 3D .poly (smesh = false) or .smesh: the mesh's facets, or else its
+// triangles as one-triangle facets.
+void append_facets(std::string& out, const MeshData& mesh, bool smesh) {
+  FacetList from_triangles;
+  const FacetList* facets = &mesh.facets;
+  if (mesh.facets.empty()) {
+    from_triangles.corners = mesh.triangles;
+    from_triangles.labels = mesh.triangle_labels;
+    for (std::size_t t = 0; t < mesh.triangle_count(); ++t) {
+      from_triangles.polygon_end.push_back(3 * (t + 1));
+      from_triangles.facet_end.push_back(t + 1);
+      from_triangles.hole_end.push_back(0);
+    }
+    facets = &from_triangles;
+  }
+  out += marker_header(facets->facet_count(), facets->labels);
+  for (std::size_t f = 0; f < facets->facet_count(); ++f) {
+    const std::uint64_t first = facets->polygon_begin(f), holes = facets->hole_begin(f);
+    if (smesh) {
+      append_polygon(out, *facets, first);
+      append_label_field(out, facets->labels, f);
+      out += '\n';
+      continue;
+    }
+    detail::append_integer(out, facets->facet_end[f] - first);
+    if (!facets->labels.empty() || facets->hole_end[f] > holes) {
+      out += ' ';
+      detail::append_integer(out, facets->hole_end[f] - holes);
+      append_label_field(out, facets->labels, f);
+    }
+    out += '\n';
+    for (std::uint64_t p = first; p < facets->facet_end[f]; ++p) {
+      append_polygon(out, *facets, p);
+      out += '\n';
+    }
+    for (std::uint64_t h = holes; h < facets->hole_end[f]; ++h) {
+      detail::append_integer(out, h - holes + 1);
+      for (std::size_t k = 0; k < 3; ++k) {
+        out += ' ';
+        append_double(out, facets->holes[3 * h + k]);
+      }
+      out += '\n';
+    }
+  }
+}
+
+std::string format_poly(const MeshData& mesh, const std::string& name, bool smesh) {
   if (!mesh.tetrahedra.empty() || (mesh.dimension == 2 && !mesh.triangles.empty())) {
     throw FormatError(name, 0, "a .poly holds a domain, not elements: write the mesh as .node/.ele");
   }
   if (mesh.dimension == 3 && !mesh.segments.empty()) {
-    throw FormatError(name, 0, "a 3D .poly cannot hold segments (only triangular facets)");
+    throw FormatError(name, 0, "a 3D .poly cannot hold segments (only facets)");
+  }
+  if (mesh.dimension == 3 && !mesh.facets.empty() && !mesh.triangles.empty()) {
+    throw FormatError(name, 0, "the domain has both facets and triangles: a .poly holds one facet list");
+  }
+  if (smesh && mesh.dimension != 3) throw FormatError(name, 0, "a .smesh holds a 3D domain");
+  for (std::size_t f = 0; smesh && f < mesh.facets.facet_count(); ++f) {
+    if (mesh.facets.facet_end[f] - mesh.facets.polygon_begin(f) != 1 || mesh.facets.hole_end[f] != mesh.facets.hole_begin(f)) {
+      throw FormatError(name, 0, "facet " + std::to_string(f + 1) + " has several polygons or holes: a .smesh facet is one polygon (write a .poly)");
+    }
   }
   std::string out;
   append_points(out, mesh);
@@ -413,12 +518,10 @@ std::string format_poly(const MeshData& mesh, const std::string& name) {
     out += marker_header(mesh.segment_count(), mesh.segment_labels);
     append_cell_records(out, mesh.segments, mesh.segment_labels, 2);
   } else {
-    append_facets(out, mesh);
+    append_facets(out, mesh, smesh);
   }
   append_domain_points(out, mesh.holes, mesh.dimension, nullptr);
-  if (!mesh.region_points.empty()) {
-    append_domain_points(out, mesh.region_points, mesh.dimension, &mesh.region_attributes);
-  }
+  if (!mesh.region_points.empty()) append_regions(out, mesh);
   return out;
 }
 
@@ -441,8 +544,8 @@ std::string format_marked_cells(const std::vector<Index>& cells, const std::vect
 }
 
 void write_mesh_files(const MeshData& mesh, const fs::path& path) {
-  if (!mesh.holes.empty() || !mesh.region_points.empty()) {
-    throw FormatError(path.string(), 0, "holes and region points go only in a .poly file");
+  if (!mesh.holes.empty() || !mesh.region_points.empty() || !mesh.facets.empty()) {
+    throw FormatError(path.string(), 0, "holes, region points and facets go only in a .poly file");
   }
   std::string node;
   append_points(node, mesh);
@@ -464,11 +567,11 @@ void write_mesh_files(const MeshData& mesh, const fs::path& path) {
 MeshData parse_triangle_format(const fs::path& path, std::string contents, const CompanionFiles& companions) {
   const std::string extension = path.extension().string();
   TextReader in(path.string(), std::move(contents));
-  if (extension == ".poly") return parse_poly(in, path, companions);
+  if (extension == ".poly" || extension == ".smesh") return parse_poly(in, path, companions);
   if (extension == ".node" || extension == ".ele" || extension == ".face" || extension == ".edge") {
     return parse_mesh_files(in, path, companions);
   }
-  throw FormatError(path.string(), 0, "not a Triangle/TetGen file (.node .ele .face .edge .poly)");
+  throw FormatError(path.string(), 0, "not a Triangle/TetGen file (.node .ele .face .edge .poly .smesh)");
 }
 
 MeshData read_triangle_format(const fs::path& path) {
@@ -480,12 +583,12 @@ MeshData read_triangle_format(const fs::path& path) {
 void write_triangle_format(const MeshData& mesh, const fs::path& path) {
   detail::check_writable(mesh, path.string());
   const std::string extension = path.extension().string();
-  if (extension == ".poly") {
-    write_file_atomically(path, format_poly(mesh, path.string()));
+  if (extension == ".poly" || extension == ".smesh") {
+    write_file_atomically(path, format_poly(mesh, path.string(), extension == ".smesh"));
   } else if (extension == ".node" || extension == ".ele" || extension == ".face" || extension == ".edge") {
     write_mesh_files(mesh, path);
   } else {
-    throw FormatError(path.string(), 0, "not a Triangle/TetGen file (.node .ele .face .edge .poly)");
+    throw FormatError(path.string(), 0, "not a Triangle/TetGen file (.node .ele .face .edge .poly .smesh)");
   }
 }
 

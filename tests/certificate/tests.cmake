@@ -10,3 +10,10 @@ add_test(NAME certificate.pinch_cli
          COMMAND ${CERTIMESH_CERT_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/pinch_cli_test.py $<TARGET_FILE:certimesh>
                  ${CMAKE_CURRENT_BINARY_DIR}/pinch_cli)
 set_tests_properties(certificate.pinch_cli PROPERTIES TIMEOUT 120 LABELS "certificate;cli")
+# TetGen's .poly domains (polygonal facets, facet holes, cavities, regions, an internal facet)
+# meshed by TetGen and certified, and TetGen's meshes broken on purpose refused
+# (tetgen_domains_test.py; skipped, exit 77, when tetgen is absent).
+add_test(NAME certificate.tetgen_domains
+         COMMAND ${CERTIMESH_CERT_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/tetgen_domains_test.py $<TARGET_FILE:certimesh>
+                 ${CMAKE_CURRENT_BINARY_DIR}/tetgen_domains)
+set_tests_properties(certificate.tetgen_domains PROPERTIES SKIP_RETURN_CODE 77 TIMEOUT 120 LABELS "certificate;interop")

@@ -59,6 +59,27 @@ inline std::vector<double> coordinates(std::size_t count) {
   return *rc::gen::container<std::vector<double>>(count, coordinate());
 }
 
+/// A TetGen facet list over `points` points: `count` facets of 1 to 3 polygons, each of 1 to 6
+/// distinct corners (consecutive indices from a random start), 0 to 2 facet holes, labels.
+inline io::FacetList facets_of(std::size_t count, std::size_t points) {
+  io::FacetList f;
+  for (std::size_t i = 0; i < count; ++i) {
+    const auto polygons = *rc::gen::inRange<std::size_t>(1, 4);
+    for (std::size_t p = 0; p < polygons; ++p) {
+      const auto k = *rc::gen::inRange<std::size_t>(1, std::min<std::size_t>(points, 6) + 1);
+      const auto start = *rc::gen::inRange<std::size_t>(0, points);
+      for (std::size_t c = 0; c < k; ++c) f.corners.push_back(static_cast<Index>((start + c) % points));
+      f.polygon_end.push_back(f.corners.size());
+    }
+    f.facet_end.push_back(f.polygon_end.size());
+    const std::vector<double> holes = coordinates(3 * *rc::gen::inRange<std::size_t>(0, 3));
+    f.holes.insert(f.holes.end(), holes.begin(), holes.end());
+    f.hole_end.push_back(f.holes.size() / 3);
+  }
+  f.labels = labels_for(count);
+  return f;
+}
+
 /// What a mesh file holds: points, and cells over them with random valid indices.
 /// 2D: triangles and segments; 3D: tetrahedra, boundary triangles and segments.
 inline rc::Gen<MeshData> mesh_of(int dimension) {
@@ -98,13 +119,15 @@ inline rc::Gen<MeshData> domain_of(int dimension) {
       m.segments = cells(nc, 2, n);
       m.segment_labels = labels_for(nc);
     } else {
-      m.triangles = cells(nc, 3, n);
-      m.triangle_labels = labels_for(nc);
+      m.facets = facets_of(nc, n);
     }
     m.holes = coordinates(*rc::gen::inRange<std::size_t>(0, 4) * dim);
     const auto nr = *rc::gen::inRange<std::size_t>(0, 4);
     m.region_points = coordinates(nr * dim);
     m.region_attributes = coordinates(nr);
+    if (nr > 0 && *rc::gen::arbitrary<bool>()) {  // some constraints ("none" is -1, and not all none)
+      for (std::size_t r = 0; r < nr; ++r) m.region_max_measures.push_back(r % 2 == 0 ? 0.5 + double(r) : -1.0);
+    }
     return m;
   });
 }
@@ -121,7 +144,8 @@ inline bool same_bits(const std::vector<double>& a, const std::vector<double>& b
 inline bool identical(const MeshData& a, const MeshData& b) {
   return a == b && same_bits(a.coordinates, b.coordinates) && same_bits(a.holes, b.holes) &&
          same_bits(a.region_points, b.region_points) &&
-         same_bits(a.region_attributes, b.region_attributes);
+         same_bits(a.region_attributes, b.region_attributes) && same_bits(a.facets.holes, b.facets.holes) &&
+         same_bits(a.region_max_measures, b.region_max_measures);
 }
 
 /// A fresh, empty folder for one test program's files under the system's temporary folder,

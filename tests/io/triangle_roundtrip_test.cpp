@@ -4,7 +4,10 @@
 #include <gtest/gtest.h>
 #include <rapidcheck/gtest.h>
 
+#include <algorithm>
+#include <cstdint>
 #include <filesystem>
+#include <vector>
 
 #include "certimesh/io/format_error.h"
 #include "certimesh/io/mesh_file.h"
@@ -112,6 +115,7 @@ TEST(TriangleRead, PolyWithHoleAndRegion) {
   expected.holes = {2, 2};
   expected.region_points = {0.5, 0.5};
   expected.region_attributes = {10};
+  expected.region_max_measures = {0.1};
   EXPECT_EQ(read_mesh(kData / "box.poly"), expected);
 }
 
@@ -119,9 +123,64 @@ TEST(TriangleRead, TetGenPolyTakesItsPointsFromTheNodeFile) {
   MeshData expected;
   expected.dimension = 3;
   expected.coordinates = {0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1};
-  expected.triangles = {0, 2, 1, 0, 1, 3, 1, 2, 3, 0, 3, 2};
-  expected.triangle_labels = {1, 2, 3, 0};
+  expected.facets.corners = {0, 2, 1, 0, 1, 3, 1, 2, 3, 0, 3, 2};
+  expected.facets.polygon_end = {3, 6, 9, 12};
+  expected.facets.facet_end = {1, 2, 3, 4};
+  expected.facets.hole_end = {0, 0, 0, 0};
+  expected.facets.labels = {1, 2, 3, 0};
   EXPECT_EQ(read_mesh(kData / "tetp.poly"), expected);
+}
+
+// Hand-derived from the file (1-based corners minus one): polygons of 4 corners, a facet of two
+// polygons with a facet hole, markers, comments at line ends, a region with a maximum volume.
+TEST(TriangleRead, TetGenPolyWithPolygonsFacetHoleAndRegion) {
+  const MeshData d = read_mesh(kData / "pocket.poly");
+  EXPECT_EQ(d.dimension, 3);
+  EXPECT_EQ(d.point_count(), 16u);
+  EXPECT_EQ(d.facets.facet_count(), 11u);
+  EXPECT_EQ(d.facets.polygon_count(), 12u);
+  EXPECT_EQ(d.facets.facet_end, (std::vector<std::uint64_t>{1, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12}));
+  EXPECT_EQ(d.facets.hole_end, (std::vector<std::uint64_t>{0, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1}));
+  EXPECT_EQ(d.facets.holes, (std::vector<double>{2, 2, 2}));
+  EXPECT_EQ(d.facets.labels, (std::vector<Label>{1, 2, 3, 3, 3, 3, 4, 4, 4, 4, 4}));
+  const std::vector<Index> first_three{0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11};
+  EXPECT_TRUE(std::equal(first_three.begin(), first_three.end(), d.facets.corners.begin()));
+  EXPECT_EQ(d.facets.corners.size(), 48u);
+  EXPECT_EQ(d.facets.polygon_end.back(), 48u);
+  EXPECT_EQ(d.region_points, (std::vector<double>{0.5, 0.5, 0.5}));
+  EXPECT_EQ(d.region_attributes, (std::vector<double>{7}));
+  EXPECT_EQ(d.region_max_measures, (std::vector<double>{0.5}));
+  EXPECT_TRUE(d.triangles.empty());
+}
+
+// .smesh, 0-based: one polygon per facet, a corner list continued on the next line, the marker
+// after the last corner.
+TEST(TriangleRead, TetGenSmeshZeroBasedWithContinuedCornerList) {
+  MeshData expected;
+  expected.dimension = 3;
+  expected.coordinates = {0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1, 1, 0, 1, 0, 1, 1};
+  expected.facets.corners = {0, 2, 1, 3, 4, 5, 0, 1, 4, 3, 1, 2, 5, 4, 2, 0, 3, 5};
+  expected.facets.polygon_end = {3, 6, 10, 14, 18};
+  expected.facets.facet_end = {1, 2, 3, 4, 5};
+  expected.facets.hole_end = {0, 0, 0, 0, 0};
+  expected.facets.labels = {5, 6, 7, 8, 9};
+  EXPECT_EQ(read_mesh(kData / "wedge.smesh"), expected);
+}
+
+TEST(TriangleWrite, FacetsRoundTripThroughSmeshAndAreRefusedElsewhere) {
+  const MeshData wedge = read_mesh(kData / "wedge.smesh");
+  write_mesh(wedge, folder() / "wedge.smesh");
+  EXPECT_TRUE(identical(read_mesh(folder() / "wedge.smesh"), wedge));
+  const MeshData pocket = read_mesh(kData / "pocket.poly");
+  EXPECT_THROW(write_mesh(pocket, folder() / "pocket.smesh"), FormatError);  // a facet with a hole
+  EXPECT_THROW(write_mesh(pocket, folder() / "pocket.mesh"), FormatError);   // quads: not triangles
+  const MeshData tet = read_mesh(kData / "tetp.poly");                        // four triangles: they convert
+  write_mesh(tet, folder() / "tetp.mesh");
+  const MeshData back = read_mesh(folder() / "tetp.mesh");
+  EXPECT_EQ(back.triangles, tet.facets.corners);
+  EXPECT_EQ(back.triangle_labels, tet.facets.labels);
+  write_mesh(pocket, folder() / "pocket.poly");
+  EXPECT_TRUE(identical(read_mesh(folder() / "pocket.poly"), pocket));
 }
 
 TEST(TriangleRead, AllZeroMarkersReadAsNoMarkers) {

@@ -89,8 +89,11 @@ std::string check_help() {
          "  MESH                 " +
          std::string(kMeshInputExtensions) +
          "\n"
-         "  --domain DOMAIN      also check that MESH tiles exactly DOMAIN (.poly in 2D, a\n"
-         "                       closed surface mesh in 3D) (default: no domain)\n"
+         "  --domain DOMAIN      also check that MESH tiles exactly DOMAIN (.poly in 2D; in\n"
+         "                       3D a TetGen .poly/.smesh -- planar polygonal facets, facet\n"
+         "                       holes, hole points, region attributes checked against the\n"
+         "                       tetrahedron labels -- or a closed surface mesh) (default: no\n"
+         "                       domain)\n"
          "  --certificate OUT.json  write the certificate as JSON (default: not written)\n"
          "  --boundary-tolerance D  accept mesh boundary vertices within D of their domain\n"
          "                       segment / triangle in each coordinate (D a distance, e.g.\n"

@@ -39,6 +39,7 @@ enum class Defect {
   domain_boundary_not_covered, // part of a domain segment/face covered by no mesh facet
   hole_covered,                // a hole point of the domain lies inside the mesh
   region_not_meshed,           // a bounded region of the domain (no hole point) left empty
+  region_label_mismatch,       // 3D: a tetrahedron's label differs from its region's attribute
 };
 
 /// The stable snake_case name used in the JSON certificate and on the command line.

@@ -13,6 +13,31 @@ namespace certimesh::io {
 using Index = std::uint32_t;  // a vertex index; files naming an index >= 2^32 are refused
 using Label = std::int32_t;   // material, boundary or point marker; 0 when the file has none
 
+// A TetGen facet list (3D .poly and .smesh): each facet is a planar set of polygons (1 corner:
+// an isolated point in the facet, 2: a segment, 3 or more: a closed polygon) with optional
+// facet hole points and a boundary marker. Flat arrays: polygon p's corners are
+// corners[polygon_end[p-1] .. polygon_end[p]) (from 0 for p = 0), facet f's polygons are
+// polygons facet_end[f-1] .. facet_end[f]), its holes holes[3*hole_end[f-1] .. 3*hole_end[f]).
+// Reading keeps the file's facets as they are: making triangles of them is geometry
+// (certificate/), not file format.
+struct FacetList {
+  std::vector<Index> corners;
+  std::vector<std::uint64_t> polygon_end;
+  std::vector<std::uint64_t> facet_end;
+  std::vector<double> holes;              // facet hole points, 3 coordinates each
+  std::vector<std::uint64_t> hole_end;    // one per facet
+  std::vector<Label> labels;              // one per facet, or empty (all 0)
+
+  std::size_t facet_count() const { return facet_end.size(); }
+  std::size_t polygon_count() const { return polygon_end.size(); }
+  bool empty() const { return facet_end.empty(); }
+  std::uint64_t polygon_begin(std::size_t f) const { return f == 0 ? 0 : facet_end[f - 1]; }
+  std::uint64_t corner_begin(std::size_t p) const { return p == 0 ? 0 : polygon_end[p - 1]; }
+  std::uint64_t hole_begin(std::size_t f) const { return f == 0 ? 0 : hole_end[f - 1]; }
+
+  friend bool operator==(const FacetList&, const FacetList&) = default;
+};
+
 struct MeshData {
   int dimension = 2;  // coordinates per point: 2 or 3
 
@@ -31,11 +56,17 @@ struct MeshData {
   std::vector<Index> tetrahedra;
   std::vector<Label> tetrahedron_labels;
 
-  // Domain description (.poly only): hole points (`dimension` coordinates each) and region
-  // points with their attribute (Triangle/TetGen regional attributes).
+  // 3D domain facets as TetGen's .poly/.smesh give them (empty otherwise).
+  FacetList facets;
+
+  // Domain description (.poly/.smesh only): hole points (`dimension` coordinates each) and
+  // region points with their attribute (Triangle/TetGen regional attributes) and their maximum
+  // area (2D) or volume (3D): empty when no region gives one, else one per region, negative for
+  // "no constraint" (Triangle's and TetGen's convention).
   std::vector<double> holes;
   std::vector<double> region_points;
   std::vector<double> region_attributes;
+  std::vector<double> region_max_measures;
 
   std::size_t point_count() const { return coordinates.size() / static_cast<std::size_t>(dimension); }
   std::size_t segment_count() const { return segments.size() / 2; }

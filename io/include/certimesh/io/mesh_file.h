@@ -1,8 +1,8 @@
 // Reading and writing meshes by file name: the extension chooses the format.
-//   .node .ele .face .poly  Triangle (2D) / TetGen (3D)   triangle_format.h
-//   .mesh                   Medit (INRIA), ASCII            medit_format.h
-//   .msh                    Gmsh 4.1, ASCII                 gmsh_format.h
-//   .vtu                    VTK XML unstructured grid       vtu_format.h
+//   .node .ele .face .poly .smesh        Triangle (2D) / TetGen (3D)   triangle_format.h
+//   .mesh                                Medit (INRIA), ASCII           medit_format.h
+//   .msh                                 Gmsh 4.1, ASCII                gmsh_format.h
+//   .vtu                                 VTK XML unstructured grid      vtu_format.h
 // Every failure is a FormatError "FILE:LINE: why"; a failed write leaves no partial file.
 #pragma once
 
