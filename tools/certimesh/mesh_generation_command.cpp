@@ -174,6 +174,7 @@ int run_mesh(const MeshOptions& options) {
                                             : generators::MeshAlgorithm2::advancing_front;
   mesh_options.size.uniform_size = options.size;
   mesh_options.size.growth = options.gamma;
+  mesh_options.size.grading = options.grading;
   mesh_options.improve = options.improve;
   try {
     if (options.domain.rfind(kBuiltinPrefix, 0) != 0) {

@@ -17,9 +17,9 @@
 // id. Ordering decides nothing about validity: each candidate must still pass the sign tests.
 //
 // Local search: Ω is the axis-aligned box of half-width R = 1.25 max(s, r, |v0 v1|, |v0 v2|)
-// around v0 (a
-// convex neighbourhood of v1, v2 and v0, as §3.3 needs; membership is decided by exact
-// coordinate comparisons, and the grid returns a superset of the edges meeting it). When
+// around v0 (a convex neighbourhood of v1, v2 and v0, as §3.3 needs; membership is decided by
+// exact coordinate comparisons, and the R-tree of front_grid_2.h returns a superset of the
+// edges meeting it). When
 // it finds nothing, the global retry repeats the step over the whole front with exact
 // predicates, where Lemma 3.3.1 guarantees a suitable triangle.
 #include "certimesh/generators/advancing_front/advancing_front_2.h"
@@ -54,7 +54,6 @@ constexpr double kCosMaxBisectedAngle = -0.86602540378443865;  // cos 150 degree
 // triangles against fixed boundary vertices that no later smoothing could repair).
 constexpr std::uint32_t kInputRank = 0;
 constexpr std::uint32_t kGrownRank = 1;
-constexpr std::size_t kMaxGridCells = std::size_t{1} << 21;  // about 50 MB of empty cells at most
 
 double squared_distance(const Point2& p, const Point2& q) {
   const double dx = p.x - q.x, dy = p.y - q.y;
@@ -108,7 +107,6 @@ class AdvancingFront {
                  const AdvancingFrontOptions& options, const ProgressCallback& progress)
       : measure_(measure_front(points, front)),
         sizing_(options.size, measure_.least_distance),
-        grid_(bounds(points, front), grid_cell(points, front, options.size), kMaxGridCells),
         user_cap_(options.max_triangles),
         retry_cap_(options.max_global_retries),
         progress_(progress) {
@@ -138,25 +136,6 @@ class AdvancingFront {
   }
 
  private:
-  static Box2 bounds(std::span<const Point2> points, std::span<const FrontEdge> front) {
-    Box2 box{0, 0, 0, 0};
-    if (front.empty() || front[0].a >= points.size()) return box;
-    const Point2& p = points[front[0].a];
-    box = Box2{p.x, p.y, p.x, p.y};
-    for (const FrontEdge& e : front) {
-      if (e.a >= points.size()) continue;  // refused by measure_front before use
-      const Point2& q = points[e.a];
-      box = Box2{std::min(box.xlo, q.x), std::min(box.ylo, q.y), std::max(box.xhi, q.x), std::max(box.yhi, q.y)};
-    }
-    return box;
-  }
-
-  // About one search box per cell: the front edges in mode B, the user's size otherwise.
-  static double grid_cell(std::span<const Point2> points, std::span<const FrontEdge> front, const SizePolicy& size) {
-    const double edge = median_edge_length(points, front);
-    return size.uniform_size > 0.0 && !size.size_function ? std::max(edge, size.uniform_size) : edge;
-  }
-
   std::uint64_t triangles() const { return result_.triangles.size(); }
   const Point2& point(std::uint32_t v) const { return result_.points[v]; }
   double edge_length(std::uint32_t a, std::uint32_t b) const {
