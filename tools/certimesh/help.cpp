@@ -11,7 +11,7 @@ namespace certimesh::cli {
 namespace {
 
 std::string format(const char* fmt, double value) {
-  char buffer[64];
+  char buffer[160];
   std::snprintf(buffer, sizeof buffer, fmt, value);
   return buffer;
 }
@@ -31,7 +31,7 @@ std::string mesh_help() {
          "\n"
          "  --size H             largest edge length (default: " +
          (d.size > 0 ? format("%g", d.size)
-                     : format("%g of the diagonal of the domain's bounding box", generators::default_maximum_fraction)) +
+                     : format("%g times the diagonal of the\n                       domain's bounding box", generators::default_maximum_fraction)) +
          ")\n"
          "  --grading G          the size follows the boundary's local feature size (each\n"
          "                       domain point's distance to its nearest other point or segment,\n"

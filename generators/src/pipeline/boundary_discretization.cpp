@@ -42,7 +42,9 @@ SizeIntegral integrate_inverse_size(const Point2& a, const Point2& b, double len
   out.cumulative.push_back(0.0);
   double t = 0.0, previous = 1.0 / checked_size(size, a);
   while (t < 1.0) {
-    const double step = std::min(1.0 / kMinSizeSamples, 1.0 / (kSamplesPerSize * previous * length));
+    // A constant size (no size function) needs no more than the 16 samples.
+    const double step = size.size_function ? std::min(1.0 / kMinSizeSamples, 1.0 / (kSamplesPerSize * previous * length))
+                                           : 1.0 / kMinSizeSamples;
     const double next = step >= 1.0 - t ? 1.0 : t + step;
     const double current = 1.0 / checked_size(size, next == 1.0 ? b : lerp(a, b, next));
     out.at.push_back(next);

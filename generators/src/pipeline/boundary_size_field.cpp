@@ -120,9 +120,13 @@ SizePolicy boundary_adapted_policy(const PlanarDomain& domain, const SizePolicy&
   const double maximum = user.uniform_size > 0.0 ? user.uniform_size : default_maximum_size(domain);
   auto field = std::make_shared<const BoundarySizeField2>(domain, user.grading, maximum);
   SizePolicy policy;
-  policy.size_function = [field](const Point2& p) { return (*field)(p); };
   policy.growth = user.growth;
   policy.grading = 0.0;  // already applied
+  if (field->smallest() >= maximum) {
+    policy.uniform_size = maximum;
+    return policy;
+  }
+  policy.size_function = [field](const Point2& p) { return (*field)(p); };
   return policy;
 }
 

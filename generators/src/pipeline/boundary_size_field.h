@@ -42,6 +42,8 @@ class BoundarySizeField2 {
   double operator()(const Point2& p) const;
   /// h at domain point v after propagation (≤ lfs_v).
   double at_vertex(std::uint32_t v) const { return h_[v]; }
+  /// The smallest vertex value: when it is at least the maximum, h is the maximum everywhere.
+  double smallest() const { return smallest_; }
   /// lfs of domain point v before propagation.
   double local_feature_size(std::uint32_t v) const { return lfs_[v]; }
 
@@ -61,7 +63,9 @@ double default_maximum_size(const PlanarDomain& domain);
 
 /// The policy the pipeline meshes with: `user` itself when it has a size function or
 /// grading == 0; otherwise the boundary-adapted size as its size function (maximum
-/// user.uniform_size when positive, default_maximum_size otherwise), user.growth kept.
+/// user.uniform_size when positive, default_maximum_size otherwise), user.growth kept -- or,
+/// when every domain point's value reaches the maximum (h is then the maximum everywhere), that
+/// maximum as a uniform size: the same mesh as `--grading 0 --size H`, without a walk per query.
 SizePolicy boundary_adapted_policy(const PlanarDomain& domain, const SizePolicy& user);
 
 }  // namespace certimesh::generators::detail
