@@ -285,13 +285,17 @@ class AdvancingFront {
   // Whether v is a front neighbour of v1 or v2 at a front angle too wide to close with one
   // triangle (above kMinBisectedAngle): closing a right angle makes a triangle of quality
   // 0.89 at best, the bisector apex two of 0.96 (corner_apex).
-  bool wide_corner(const Step& st, std::uint32_t v) const {
+  bool wide_corner(const Step& st, std::uint32_t v) const { return corner_cosine_below(st, v, kCosMinBisectedAngle); }
+
+  // Whether v is a front neighbour of v2 (edge v2 -> v) or of v1 (edge v -> v1) and the front
+  // corner there has a cosine below `cosine`.
+  bool corner_cosine_below(const Step& st, std::uint32_t v, double cosine) const {
     const auto cos_at = [&](const Point2& o, const Point2& p, const Point2& q) {
       const double ux = p.x - o.x, uy = p.y - o.y, wx = q.x - o.x, wy = q.y - o.y;
       return (ux * wx + uy * wy) / std::sqrt((ux * ux + uy * uy) * (wx * wx + wy * wy));
     };
-    if (front_.find(st.v2, v) != no_id && cos_at(st.p2, st.p1, point(v)) < kCosMinBisectedAngle) return true;
-    return front_.find(v, st.v1) != no_id && cos_at(st.p1, st.p2, point(v)) < kCosMinBisectedAngle;
+    if (front_.find(st.v2, v) != no_id && cos_at(st.p2, st.p1, point(v)) < cosine) return true;
+    return front_.find(v, st.v1) != no_id && cos_at(st.p1, st.p2, point(v)) < cosine;
   }
 
   // Whether v is a front neighbour of v1 or v2 across a corner within about 0.01 degree of a
@@ -302,14 +306,7 @@ class AdvancingFront {
   // which the certificate refuses (measured on a 2000-spike star with the graded size). The
   // local search leaves the corner to a later step; the global retry may still close it (a
   // last triangle can need it).
-  bool flat_corner(const Step& st, std::uint32_t v) const {
-    const auto cos_at = [&](const Point2& o, const Point2& p, const Point2& q) {
-      const double ux = p.x - o.x, uy = p.y - o.y, wx = q.x - o.x, wy = q.y - o.y;
-      return (ux * wx + uy * wy) / std::sqrt((ux * ux + uy * uy) * (wx * wx + wy * wy));
-    };
-    if (front_.find(st.v2, v) != no_id && cos_at(st.p2, st.p1, point(v)) < kCosFlatCorner) return true;
-    return front_.find(v, st.v1) != no_id && cos_at(st.p1, st.p2, point(v)) < kCosFlatCorner;
-  }
+  bool flat_corner(const Step& st, std::uint32_t v) const { return corner_cosine_below(st, v, kCosFlatCorner); }
 
   void collect_candidates(const Step& st, bool exact) {
     candidates_.clear();
