@@ -179,6 +179,7 @@ int main(int argc, char** argv) {
   gen::MeshDomainOptions2 mesh_options;
   mesh_options.improve = false;
   mesh_options.size.uniform_size = args.h;
+  mesh_options.size.grading = 0.0;  // the uniform start mesh of §5.2, not the boundary-adapted size
   const auto start = gen::mesh_domain_2(domain, mesh_options);
   const double count = static_cast<double>(start.stats.triangles);
   const double scale = size_scale_for_count(count);
@@ -220,6 +221,7 @@ int main(int argc, char** argv) {
     gen::ImprovementOptions2 options;
     options.target_quality = args.target;
     options.operations = set.operations;
+    options.schedule = gen::ImprovementSchedule2::baskets;  // the monograph's listing, as §5.2 runs it
     options.basket_size = args.basket_size;
     options.max_baskets = args.baskets;
     options.coarsen_straight_boundary = args.coarsen_straight_boundary;

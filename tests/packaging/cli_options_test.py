@@ -18,7 +18,7 @@ import tempfile
 # command -> [(option, value or None for a flag, has a default)]
 OPTIONS = {
     "mesh": [("-o", "out.vtu", False), ("--output", "out.vtu", False), ("--size", "0.5", True),
-             ("--gamma", "1.5", True), ("--algorithm", "front", True),
+             ("--gamma", "1.5", True), ("--grading", "0.3", True), ("--algorithm", "front", True),
              ("--certificate", "c.json", True), ("--svg", "p.svg", True),
              ("--save-domain", "d.poly", True), ("--no-improve", None, True),
              ("--quiet", None, True)],

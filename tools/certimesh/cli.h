@@ -3,6 +3,7 @@
 #pragma once
 
 #include "certimesh/certificate/check_mesh.h"
+#include "certimesh/generators/size_policy.h"
 
 #include <cstdint>
 #include <string>
@@ -61,8 +62,9 @@ struct MeshOptions {
   std::string certificate;   // empty: no JSON certificate
   std::string svg;           // empty: no picture
   std::string save_domain;   // empty: the domain is not written (else as .poly, for check)
-  double size = 0.0;         // --size H; 0: automatic from the boundary
-  double gamma = 1.0;        // --gamma G, the growth factor of automatic sizing
+  double size = 0.0;         // --size H, the largest size; 0: a tenth of the domain's diagonal
+  double gamma = 1.0;        // --gamma G, the front's growth factor per layer (1: no limit)
+  double grading = generators::default_grading;  // --grading G; 0: no boundary-adapted size
   bool delaunay = false;     // --algorithm delaunay (default: front)
   bool improve = true;       // --no-improve turns the local-modification stage off
   bool quiet = false;        // --quiet: no progress, summary only

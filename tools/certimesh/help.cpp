@@ -11,7 +11,7 @@ namespace certimesh::cli {
 namespace {
 
 std::string format(const char* fmt, double value) {
-  char buffer[64];
+  char buffer[160];
   std::snprintf(buffer, sizeof buffer, fmt, value);
   return buffer;
 }
@@ -30,11 +30,22 @@ std::string mesh_help() {
          std::string(kMeshOutputExtensions) +
          "\n"
          "  --size H             largest edge length (default: " +
-         (d.size > 0 ? format("%g", d.size) : std::string("automatic, from the boundary")) +
+         (d.size > 0 ? format("%g", d.size)
+                     : format("%g times the diagonal of the\n                       domain's bounding box", generators::default_maximum_fraction)) +
          ")\n"
-         "  --gamma G            growth factor of the automatic size, >= 1 (default: " +
+         "  --grading G          the size follows the boundary's local feature size (each\n"
+         "                       domain point's distance to its nearest other point or segment,\n"
+         "                       its own segments' lengths included) and grows away from it by\n"
+         "                       at most G per unit of distance, up to --size; 0: --size\n"
+         "                       everywhere, or without --size growth by --gamma from the\n"
+         "                       boundary's own segments (default: " +
+         format("%g", d.grading) +
+         ")\n"
+         "  --gamma G            growth factor per front layer, >= 1: with a size, how fast the\n"
+         "                       front may coarsen towards it; with --grading 0 and no --size,\n"
+         "                       the size itself (default: " +
          format("%g", d.gamma) +
-         ")\n"
+         ", no limit)\n"
          "  --algorithm A        front (advancing front) or delaunay (default: " +
          (d.delaunay ? "delaunay" : "front") +
          ")\n"

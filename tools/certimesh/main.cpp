@@ -33,7 +33,7 @@ constexpr const char* kHelp =
     "                       embedded boundary, a single cover; with DOMAIN (.poly in 2D; a\n"
     "                       TetGen .poly/.smesh or a closed surface mesh in 3D) also that\n"
     "                       MESH tiles exactly DOMAIN\n"
-    "  mesh DOMAIN -o OUT [--size H] [--gamma G] [--algorithm front|delaunay]\n"
+    "  mesh DOMAIN -o OUT [--size H] [--grading G] [--gamma G] [--algorithm front|delaunay]\n"
     "       [--certificate C.json] [--svg PICTURE.svg] [--save-domain D.poly]\n"
     "       [--no-improve] [--min-angle A] [--max-steiner N] [--quiet]\n"
     "                       mesh a 2D domain (.poly, or builtin:plate, builtin:square,\n"
@@ -83,6 +83,12 @@ std::optional<double> positive_number(const char* text) {
   return value;
 }
 
+// A finite number >= 0, or nullopt.
+std::optional<double> non_negative_number(const char* text) {
+  if (std::strcmp(text, "0") == 0) return 0.0;
+  return positive_number(text);
+}
+
 int parse_and_run_mesh(int argc, char** argv) {
   certimesh::cli::MeshOptions options;
   for (int i = 2; i < argc; ++i) {
@@ -98,6 +104,10 @@ int parse_and_run_mesh(int argc, char** argv) {
       const auto g = positive_number(argv[++i]);
       if (!g || *g < 1.0) return usage_error("mesh: --gamma needs a number >= 1, got '%s'", argv[i]);
       options.gamma = *g;
+    } else if (arg == "--grading" && has_value) {
+      const auto g = non_negative_number(argv[++i]);
+      if (!g) return usage_error("mesh: --grading needs a number >= 0, got '%s'", argv[i]);
+      options.grading = *g;
     } else if (arg == "--algorithm" && has_value) {
       const std::string_view a = argv[++i];
       if (a != "front" && a != "delaunay") return usage_error("mesh: --algorithm is front or delaunay, got '%s'", argv[i]);

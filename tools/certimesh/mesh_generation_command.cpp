@@ -184,6 +184,7 @@ int run_mesh(const MeshOptions& options) {
                                             : generators::MeshAlgorithm2::advancing_front;
   mesh_options.size.uniform_size = options.size;
   mesh_options.size.growth = options.gamma;
+  mesh_options.size.grading = options.grading;
   mesh_options.improve = options.improve;
   mesh_options.min_angle = options.min_angle;
   mesh_options.max_steiner = options.max_steiner;

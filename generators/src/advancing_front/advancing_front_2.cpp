@@ -17,9 +17,9 @@
 // id. Ordering decides nothing about validity: each candidate must still pass the sign tests.
 //
 // Local search: Ω is the axis-aligned box of half-width R = 1.25 max(s, r, |v0 v1|, |v0 v2|)
-// around v0 (a
-// convex neighbourhood of v1, v2 and v0, as §3.3 needs; membership is decided by exact
-// coordinate comparisons, and the grid returns a superset of the edges meeting it). When
+// around v0 (a convex neighbourhood of v1, v2 and v0, as §3.3 needs; membership is decided by
+// exact coordinate comparisons, and the R-tree of front_grid_2.h returns a superset of the
+// edges meeting it). When
 // it finds nothing, the global retry repeats the step over the whole front with exact
 // predicates, where Lemma 3.3.1 guarantees a suitable triangle.
 #include "certimesh/generators/advancing_front/advancing_front_2.h"
@@ -48,13 +48,13 @@ constexpr double kNearRadius = 0.7;  // group 0 of the candidate order, in units
 // isosceles apex does as well (150).
 constexpr double kCosMinBisectedAngle = 0.13917310096006544;   // cos 82 degrees
 constexpr double kCosMaxBisectedAngle = -0.86602540378443865;  // cos 150 degrees
+constexpr double kCosFlatCorner = -0.99999998;                 // cos 179.989 degrees (flat_corner)
 // The input front (the boundary) is advanced first, its shortest edge first, then the rest
 // shortest first: the first layer then follows the boundary all along it, instead of being
 // squeezed where the layers grown from a neighbouring side arrive first (they left right
 // triangles against fixed boundary vertices that no later smoothing could repair).
 constexpr std::uint32_t kInputRank = 0;
 constexpr std::uint32_t kGrownRank = 1;
-constexpr std::size_t kMaxGridCells = std::size_t{1} << 21;  // about 50 MB of empty cells at most
 
 double squared_distance(const Point2& p, const Point2& q) {
   const double dx = p.x - q.x, dy = p.y - q.y;
@@ -108,7 +108,6 @@ class AdvancingFront {
                  const AdvancingFrontOptions& options, const ProgressCallback& progress)
       : measure_(measure_front(points, front)),
         sizing_(options.size, measure_.least_distance),
-        grid_(bounds(points, front), grid_cell(points, front, options.size), kMaxGridCells),
         user_cap_(options.max_triangles),
         retry_cap_(options.max_global_retries),
         progress_(progress) {
@@ -138,25 +137,6 @@ class AdvancingFront {
   }
 
  private:
-  static Box2 bounds(std::span<const Point2> points, std::span<const FrontEdge> front) {
-    Box2 box{0, 0, 0, 0};
-    if (front.empty() || front[0].a >= points.size()) return box;
-    const Point2& p = points[front[0].a];
-    box = Box2{p.x, p.y, p.x, p.y};
-    for (const FrontEdge& e : front) {
-      if (e.a >= points.size()) continue;  // refused by measure_front before use
-      const Point2& q = points[e.a];
-      box = Box2{std::min(box.xlo, q.x), std::min(box.ylo, q.y), std::max(box.xhi, q.x), std::max(box.yhi, q.y)};
-    }
-    return box;
-  }
-
-  // About one search box per cell: the front edges in mode B, the user's size otherwise.
-  static double grid_cell(std::span<const Point2> points, std::span<const FrontEdge> front, const SizePolicy& size) {
-    const double edge = median_edge_length(points, front);
-    return size.uniform_size > 0.0 && !size.size_function ? std::max(edge, size.uniform_size) : edge;
-  }
-
   std::uint64_t triangles() const { return result_.triangles.size(); }
   const Point2& point(std::uint32_t v) const { return result_.points[v]; }
   double edge_length(std::uint32_t a, std::uint32_t b) const {
@@ -305,20 +285,35 @@ class AdvancingFront {
   // Whether v is a front neighbour of v1 or v2 at a front angle too wide to close with one
   // triangle (above kMinBisectedAngle): closing a right angle makes a triangle of quality
   // 0.89 at best, the bisector apex two of 0.96 (corner_apex).
-  bool wide_corner(const Step& st, std::uint32_t v) const {
+  bool wide_corner(const Step& st, std::uint32_t v) const { return corner_cosine_below(st, v, kCosMinBisectedAngle); }
+
+  // Whether v is a front neighbour of v2 (edge v2 -> v) or of v1 (edge v -> v1) and the front
+  // corner there has a cosine below `cosine`.
+  bool corner_cosine_below(const Step& st, std::uint32_t v, double cosine) const {
     const auto cos_at = [&](const Point2& o, const Point2& p, const Point2& q) {
       const double ux = p.x - o.x, uy = p.y - o.y, wx = q.x - o.x, wy = q.y - o.y;
       return (ux * wx + uy * wy) / std::sqrt((ux * ux + uy * uy) * (wx * wx + wy * wy));
     };
-    if (front_.find(st.v2, v) != no_id && cos_at(st.p2, st.p1, point(v)) < kCosMinBisectedAngle) return true;
-    return front_.find(v, st.v1) != no_id && cos_at(st.p1, st.p2, point(v)) < kCosMinBisectedAngle;
+    if (front_.find(st.v2, v) != no_id && cos_at(st.p2, st.p1, point(v)) < cosine) return true;
+    return front_.find(v, st.v1) != no_id && cos_at(st.p1, st.p2, point(v)) < cosine;
   }
+
+  // Whether v is a front neighbour of v1 or v2 across a corner within about 0.01 degree of a
+  // straight angle. Closing such a corner makes a triangle whose third side runs along the two
+  // front edges: on a discretized boundary segment the Steiner points are roundings of points
+  // of the segment (design decision 2), the middle one a hair inside, and that side would lie
+  // along the segment inside the rounding boxes -- an interior edge on the domain boundary,
+  // which the certificate refuses (measured on a 2000-spike star with the graded size). The
+  // local search leaves the corner to a later step; the global retry may still close it (a
+  // last triangle can need it).
+  bool flat_corner(const Step& st, std::uint32_t v) const { return corner_cosine_below(st, v, kCosFlatCorner); }
 
   void collect_candidates(const Step& st, bool exact) {
     candidates_.clear();
     const double near2 = kNearRadius * kNearRadius * st.size.s * st.size.s;
     for (const std::uint32_t v : nearby_) {
       if (v == st.v1 || v == st.v2 || orientation(st.p1, st.p2, point(v), exact) <= 0) continue;
+      if (!exact && flat_corner(st, v)) continue;  // the global retry may still close it
       const double d2 = squared_distance(point(v), st.apex);
       if (d2 < near2 && !wide_corner(st, v))
         candidates_.push_back(Candidate{v, 0, -d2});

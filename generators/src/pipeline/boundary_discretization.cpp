@@ -1,6 +1,6 @@
 #include "boundary_discretization.h"
 
-#include <array>
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 #include <string>
@@ -11,7 +11,9 @@ namespace certimesh::generators::detail {
 
 namespace {
 
-constexpr int kSizeSamples = 16;  // size samples along a segment, for graded size functions
+constexpr int kMinSizeSamples = 16;       // size samples along a segment, at least
+constexpr double kSamplesPerSize = 4.0;   // and at least this many per local size
+constexpr std::size_t kMaxSizeSamples = std::size_t{1} << 26;
 
 double checked_size(const SizePolicy& size, const Point2& p) {
   const double s = size.at(p);
@@ -27,31 +29,51 @@ Point2 lerp(const Point2& a, const Point2& b, double t) {
   return {a.x + t * (b.x - a.x), a.y + t * (b.y - a.y)};
 }
 
+// ∫ 1/s along the segment, sampled at fractions `at` (from 0 to 1): the step is at most
+// 1/16 of the segment and a quarter of the size at the last sample, so a size that varies
+// along the segment (the boundary-adapted size near a short neighbour) is followed.
+struct SizeIntegral {
+  std::vector<double> at, cumulative;
+};
+
+SizeIntegral integrate_inverse_size(const Point2& a, const Point2& b, double length, const SizePolicy& size) {
+  SizeIntegral out;
+  out.at.push_back(0.0);
+  out.cumulative.push_back(0.0);
+  double t = 0.0, previous = 1.0 / checked_size(size, a);
+  while (t < 1.0) {
+    // A constant size (no size function) needs no more than the 16 samples.
+    const double step = size.size_function ? std::min(1.0 / kMinSizeSamples, 1.0 / (kSamplesPerSize * previous * length))
+                                           : 1.0 / kMinSizeSamples;
+    const double next = step >= 1.0 - t ? 1.0 : t + step;
+    const double current = 1.0 / checked_size(size, next == 1.0 ? b : lerp(a, b, next));
+    out.at.push_back(next);
+    out.cumulative.push_back(out.cumulative.back() + 0.5 * (previous + current) * length * (next - t));
+    if (out.at.size() > kMaxSizeSamples) throw std::invalid_argument("the size is too small: a segment would need over 10^7 pieces");
+    t = next;
+    previous = current;
+  }
+  return out;
+}
+
 // The fractions (in (0, 1), increasing) where a segment of length `length` is split so that
 // each piece is about as long as the size there: the number of pieces is the integral of
 // 1/size along the segment, rounded, and the split points divide that integral evenly.
 std::vector<double> split_fractions(const Point2& a, const Point2& b, double length, const SizePolicy& size) {
-  std::array<double, kSizeSamples + 1> cumulative{};  // ∫ 1/s from 0 to sample k
-  double previous = 1.0 / checked_size(size, a);
-  for (int k = 1; k <= kSizeSamples; ++k) {
-    const double t = static_cast<double>(k) / kSizeSamples;
-    const double current = 1.0 / checked_size(size, lerp(a, b, t));
-    cumulative[static_cast<std::size_t>(k)] =
-        cumulative[static_cast<std::size_t>(k - 1)] + 0.5 * (previous + current) * length / kSizeSamples;
-    previous = current;
-  }
-  const double total = cumulative[kSizeSamples];
+  const SizeIntegral integral = integrate_inverse_size(a, b, length, size);
+  const double total = integral.cumulative.back();
   const double pieces = std::max(1.0, std::round(total));
   if (pieces > 1e9) throw std::invalid_argument("the size is too small: a segment would need over 10^9 pieces");
   std::vector<double> fractions;
   fractions.reserve(static_cast<std::size_t>(pieces) - 1);
   std::size_t k = 0;
+  const std::size_t last = integral.at.size() - 1;
   for (double i = 1.0; i < pieces; i += 1.0) {
     const double target = total * i / pieces;
-    while (k + 1 < kSizeSamples && cumulative[k + 1] < target) ++k;
-    const double span = cumulative[k + 1] - cumulative[k];
-    const double within = span > 0.0 ? (target - cumulative[k]) / span : 0.0;
-    const double f = (static_cast<double>(k) + within) / kSizeSamples;
+    while (k + 1 < last && integral.cumulative[k + 1] < target) ++k;
+    const double span = integral.cumulative[k + 1] - integral.cumulative[k];
+    const double within = span > 0.0 ? (target - integral.cumulative[k]) / span : 0.0;
+    const double f = integral.at[k] + within * (integral.at[k + 1] - integral.at[k]);
     if (f > 0.0 && f < 1.0 && (fractions.empty() || f > fractions.back())) fractions.push_back(f);
   }
   return fractions;

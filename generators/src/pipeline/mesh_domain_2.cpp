@@ -4,9 +4,11 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <stdexcept>
 
 #include "boundary_discretization.h"
+#include "boundary_size_field.h"
 #include "certimesh/generators/advancing_front/advancing_front_2.h"
 #include "certimesh/generators/domain/domain_problem.h"
 #include "certimesh/generators/domain/domain_validation.h"
@@ -31,6 +33,11 @@ constexpr int kSmoothingSweeps = 3;  // ideal-point smoothing sweeps before Algo
 // that the few triangles between 0.9 and 0.93 where fronts meet are smoothed too; they are a
 // few hundred in 10^6, and the Delaunay path (most of its triangles below 0.9) keeps 0.9.
 constexpr double kFrontTargetQuality = 0.93;
+// After Delaunay refinement most triangles lie between 0.8 and 0.9: the smoothing still works
+// on those below 0.9, Algorithm 35 only on those below 0.85. Measured on the unit square at
+// h = 0.005 (bench/RESULTS.md, "Improvement bounded"): with 0.9 the improvement took 2.7 s of CPU
+// for a worst of 0.81; with 0.85 the worst is the same and the stage costs a fifth of that.
+constexpr double kDelaunayTargetQuality = 0.85;
 // Full enumerations the advancing front may fall back to (O(front) each) before it hands the
 // rest to the Delaunay completion, which needs no retry.
 constexpr std::uint64_t kMaxGlobalRetries = 256;
@@ -53,6 +60,40 @@ class StageClock {
 void refuse_if_invalid(const PlanarDomain& domain) {
   std::vector<DomainProblem> problems = validate_domain(domain);
   if (!problems.empty()) throw InvalidDomain(std::move(problems));
+}
+
+// Scale invariance: the pipeline meshes a copy of the domain scaled by 2^-e, e the binary
+// exponent of its largest coordinate magnitude, and scales the mesh back by 2^e. Scaling by a
+// power of two is exact for every normal double, so a domain scaled by 2^k (k within the
+// normal range) gives the same scaled copy, the same mesh bit for bit, and the same mesh
+// scaled by 2^k -- whatever absolute quantity a stage may use. The scaled copy's largest
+// coordinate is in [1, 2): no squared length under- or overflows there.
+int scale_exponent(const PlanarDomain& domain) {
+  double largest = 0.0;
+  const auto see = [&](const Point2& p) { largest = std::max({largest, std::fabs(p.x), std::fabs(p.y)}); };
+  for (const Point2& p : domain.points) see(p);
+  for (const Point2& p : domain.holes) see(p);
+  for (const RegionSeed& r : domain.regions) see(r.point);
+  return largest > 0.0 && std::isfinite(largest) ? std::ilogb(largest) : 0;
+}
+
+Point2 scaled(const Point2& p, int e) { return {std::ldexp(p.x, e), std::ldexp(p.y, e)}; }
+
+PlanarDomain scaled(PlanarDomain domain, int e) {
+  for (Point2& p : domain.points) p = scaled(p, e);
+  for (Point2& p : domain.holes) p = scaled(p, e);
+  for (RegionSeed& r : domain.regions) r.point = scaled(r.point, e);
+  return domain;
+}
+
+SizePolicy scaled(SizePolicy size, int e) {
+  if (size.uniform_size > 0.0) size.uniform_size = std::ldexp(size.uniform_size, e);
+  if (size.size_function) {
+    size.size_function = [user = std::move(size.size_function), e](const Point2& p) {
+      return std::ldexp(user(scaled(p, -e)), e);
+    };
+  }
+  return size;
 }
 
 // Splits the boundary; a split whose rounded Steiner points would make the boundary invalid
@@ -117,7 +158,10 @@ void improvement_stage(Generated& g, const detail::DiscretizedBoundary& boundary
     improve.target_quality = kFrontTargetQuality;
   }
   detail::TriangleSoup soup{std::move(g.points), std::move(g.triangles), std::move(g.labels)};
-  detail::smooth_poor_regions(soup, boundary.subsegments, improve.target_quality, kSmoothingSweeps);
+  detail::smooth_poor_regions(soup, boundary.subsegments, improve.target_quality, kSmoothingSweeps,
+                              improve.min_angle_floor);
+  if (options.target_quality <= 0.0 && options.algorithm == MeshAlgorithm2::delaunay)
+    improve.target_quality = kDelaunayTargetQuality;
   const detail::RegionImprovementStats r = detail::improve_bad_region(soup, boundary.subsegments, improve, progress);
   stats.improved_region = r.region_triangles;
   stats.improvement_iterations = r.improvement.iterations;
@@ -200,14 +244,32 @@ void quality_statistics(const io::MeshData& mesh, MeshDomainStats2& stats) {
   stats.mean_quality = mesh.triangle_count() ? sum / static_cast<double>(mesh.triangle_count()) : 0.0;
 }
 
+// The whole domain as its own boundary: the domain triangulation's refusals (open loops, an
+// empty domain) then name the input's own coordinates.
+detail::DiscretizedBoundary unsplit(const PlanarDomain& domain) {
+  detail::DiscretizedBoundary boundary{domain.points, domain.segments, {}};
+  for (std::uint32_t s = 0; s < domain.segments.size(); ++s) boundary.origin.push_back(s);
+  return boundary;
+}
+
+void scale_back(io::MeshData& mesh, int e) {
+  for (double& c : mesh.coordinates) c = std::ldexp(c, e);
+}
+
 }  // namespace
 
-MeshDomainResult2 mesh_domain_2(const PlanarDomain& domain, const MeshDomainOptions2& options,
+MeshDomainResult2 mesh_domain_2(const PlanarDomain& input, const MeshDomainOptions2& input_options,
                                 const ProgressCallback& progress) {
   MeshDomainResult2 result;
   StageClock clock(result.stats.timings);
-  refuse_if_invalid(domain);
+  refuse_if_invalid(input);
+  detail::triangulate_domain(input, unsplit(input), progress);  // refusals in the input's coordinates
   clock.lap("validation");
+  const int exponent = scale_exponent(input);
+  const PlanarDomain domain = scaled(input, -exponent);
+  MeshDomainOptions2 options = input_options;
+  options.size = detail::boundary_adapted_policy(domain, scaled(input_options.size, -exponent));
+  clock.lap("size field");
   const detail::DiscretizedBoundary boundary = discretize_valid_boundary(domain, options.size);
   result.stats.boundary_vertices = boundary.points.size();
   clock.lap("boundary");
@@ -232,7 +294,8 @@ MeshDomainResult2 mesh_domain_2(const PlanarDomain& domain, const MeshDomainOpti
   }
   result.mesh = to_output(generated, boundary);
   result.stats.completed_by_delaunay = generated.completed_by_delaunay;
-  quality_statistics(result.mesh, result.stats);
+  quality_statistics(result.mesh, result.stats);  // in the scaled copy: no area underflows at 2^-900
+  scale_back(result.mesh, exponent);
   return result;
 }
 

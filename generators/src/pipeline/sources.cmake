@@ -3,6 +3,7 @@
 target_sources(certimesh_generators PRIVATE
   ${CMAKE_CURRENT_LIST_DIR}/point_on_segment.cpp
   ${CMAKE_CURRENT_LIST_DIR}/boundary_discretization.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/boundary_size_field.cpp
   ${CMAKE_CURRENT_LIST_DIR}/domain_triangulation.cpp
   ${CMAKE_CURRENT_LIST_DIR}/delaunay_completion.cpp
   ${CMAKE_CURRENT_LIST_DIR}/region_labels.cpp

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "certimesh/generators/improvement/angle_floor_2.h"
 #include "certimesh/predicates/orient2d.h"
 #include "certimesh/topology/quality.h"
 
@@ -38,13 +39,16 @@ std::array<std::uint32_t, 2> link_edge(const std::array<std::uint32_t, 3>& t, st
   return {t[static_cast<std::size_t>((i + 1) % 3)], t[static_cast<std::size_t>((i + 2) % 3)]};
 }
 
-// Worst quality of v's star with v at p; -1 when some triangle is not certainly positive.
-double star_quality(const TriangleSoup& m, std::span<const std::uint32_t> star, std::uint32_t v, const Point2& p) {
+// Worst (floored, angle_floor_2.h) quality of v's star with v at p; -2 when some triangle is
+// not certainly positive.
+double star_quality(const TriangleSoup& m, std::span<const std::uint32_t> star, std::uint32_t v, const Point2& p,
+                    double floor) {
   double worst = 1.0;
   for (const std::uint32_t t : star) {
     const auto [a, b] = link_edge(m.triangles[t], v);
-    if (predicates::orient2d(p, m.points[a], m.points[b]) != predicates::Sign::positive) return -1.0;
-    worst = std::min(worst, quality(p, m.points[a], m.points[b]));
+    if (predicates::orient2d(p, m.points[a], m.points[b]) != predicates::Sign::positive) return -2.0;
+    const topology::Point2d pp{p.x, p.y}, pa{m.points[a].x, m.points[a].y}, pb{m.points[b].x, m.points[b].y};
+    worst = std::min(worst, floored_score(topology::triangle_quality(pp, pa, pb), pp, pa, pb, floor));
   }
   return worst;
 }
@@ -80,7 +84,8 @@ Point2 link_centroid(const TriangleSoup& m, std::span<const std::uint32_t> star,
 // half and quarter steps) by the star's worst quality, or v's own place when none strictly
 // improves on `before`. The centroid serves where the ideal points of the link edges
 // disagree (a vertex of degree 5 or 7), the short steps where the full one overshoots.
-Point2 best_position(const TriangleSoup& m, std::span<const std::uint32_t> star, std::uint32_t v, double before) {
+Point2 best_position(const TriangleSoup& m, std::span<const std::uint32_t> star, std::uint32_t v, double before,
+                     double floor) {
   const Point2 here = m.points[v];
   double best = before;
   Point2 chosen = here;
@@ -88,7 +93,7 @@ Point2 best_position(const TriangleSoup& m, std::span<const std::uint32_t> star,
     for (const double step : {1.0, 0.5, 0.25}) {
       const Point2 p{here.x + step * (goal.x - here.x), here.y + step * (goal.y - here.y)};
       if (!std::isfinite(p.x) || !std::isfinite(p.y)) continue;
-      const double q = star_quality(m, star, v, p);
+      const double q = star_quality(m, star, v, p, floor);
       if (q > best) {
         best = q;
         chosen = p;
@@ -116,7 +121,7 @@ std::vector<std::uint8_t> poor_vertices(const TriangleSoup& m, const VertexStars
 }  // namespace
 
 SmoothingStats smooth_poor_regions(TriangleSoup& m, std::span<const DomainSegment> fixed_edges, double target,
-                                   int sweeps) {
+                                   int sweeps, double min_angle_floor) {
   SmoothingStats stats;
   const VertexStars stars(m);
   std::vector<std::uint8_t> movable = poor_vertices(m, stars, target);
@@ -126,8 +131,8 @@ SmoothingStats smooth_poor_regions(TriangleSoup& m, std::span<const DomainSegmen
       if (!movable[v] || stars.of(v).empty()) continue;
       ++stats.candidates;
       const auto star = stars.of(v);
-      const double before = star_quality(m, star, v, m.points[v]);
-      const Point2 moved = best_position(m, star, v, before);
+      const double before = star_quality(m, star, v, m.points[v], min_angle_floor);
+      const Point2 moved = best_position(m, star, v, before, min_angle_floor);
       if (moved != m.points[v]) {
         m.points[v] = moved;
         ++stats.moved;

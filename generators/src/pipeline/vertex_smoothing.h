@@ -22,8 +22,10 @@ struct SmoothingStats {
 };
 
 /// Smooths the free vertices of triangles below `target` (shape quality) and of their
-/// neighbours, `sweeps` times. Vertices of `fixed_edges` never move.
+/// neighbours, `sweeps` times. Vertices of `fixed_edges` never move. With `min_angle_floor`
+/// > 0 (degrees) the star is scored by the floored score of angle_floor_2.h, so no move
+/// brings a star triangle below the floor or lowers a smallest angle below it further.
 SmoothingStats smooth_poor_regions(TriangleSoup& mesh, std::span<const DomainSegment> fixed_edges, double target,
-                                   int sweeps);
+                                   int sweeps, double min_angle_floor = 0.0);
 
 }  // namespace certimesh::generators::detail

@@ -33,7 +33,8 @@ struct MeshDomainOptions2 {
   MeshAlgorithm2 algorithm = MeshAlgorithm2::advancing_front;
   SizePolicy size;
   bool improve = true;           // run the local-modification improvement
-  double target_quality = 0.0;   // 0 = 0.93 after the advancing front, 0.9 after Delaunay refinement
+  double target_quality = 0.0;   // 0 = 0.93 after the advancing front; after Delaunay refinement
+                                 // 0.9 for the smoothing, 0.85 for Algorithm 35
   /// The smallest angle wanted, degrees, in (0, 60); 0 = no guarantee (stage 6 off).
   double min_angle = 0.0;
   /// Stage 6's Steiner point cap (quality_refinement_2.h).

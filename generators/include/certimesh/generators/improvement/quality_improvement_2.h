@@ -5,6 +5,16 @@
 // rises strictly (accept-only-if-better), so the mesh quality never decreases. Validity is
 // decided by exact orientation signs, never by a tolerance.
 //
+// Two schedules. `baskets` is the monograph's listing (rank pointer k, basket N2, rounds N3):
+// an element that failed is tried again in every later round, so a mesh whose poor elements
+// cannot all be repaired costs N1 iterations of O(N2) each. `work_queue` (the default) keeps
+// the elements below the target in a queue, worst first; an element is tried when it leaves
+// the queue and then dropped, and comes back only when a committed modification touched it
+// (it is new, or it shares an edge with a new element), at most `max_attempts` times per
+// element id. Worst case: at most min(N1, max_attempts·(N + 2·S)) attempts, S the committed
+// modifications (each adds at most two elements' worth of ids), each attempt O(d² + log N) for
+// a vertex degree d -- near-linear in the mesh size for bounded degrees.
+//
 // The boundary trace is kept: boundary edges and constrained interior edges (labelled
 // facets: cuts, region interfaces) are never flipped, split, collapsed or moved off -- vertex
 // for vertex by default, only geometrically (on the input segments) with `input_segments`.
@@ -29,11 +39,23 @@ enum class LocalOperation2 : std::uint8_t {
 };
 inline constexpr std::uint8_t all_local_operations_2 = 0x1f;
 
+enum class ImprovementSchedule2 : std::uint8_t { work_queue, baskets };
+
 struct ImprovementOptions2 {
+  ImprovementSchedule2 schedule = ImprovementSchedule2::work_queue;
+  /// Work queue: how often one element id may be tried (the first try and re-queues).
+  std::uint32_t max_attempts = 8;
+  /// When positive (degrees): never commit a modification after which the smallest angle of
+  /// the elements it changed is below this floor and below the smallest angle they had
+  /// before; where a changed element is below the floor, the optimised quality there is the
+  /// smallest angle (elements at or above it are compared by `size`/shape quality as usual).
+  /// So the improvement never lowers the mesh's smallest angle below the floor (e.g. the
+  /// --min-angle bound a Delaunay refinement achieved). 0 = off.
+  double min_angle_floor = 0.0;
   double target_quality = 0.9;       // Q0: stop when the worst element reaches it
   std::uint64_t max_operations = 0;  // N1; 0 = 5 x the element count
-  std::uint32_t basket_size = 0;     // N2; 0 = 7 % of the element count (at least 16)
-  std::uint32_t max_baskets = 0;     // N3; 0 = enough that N2 * N3 exceeds the element count
+  std::uint32_t basket_size = 0;     // N2 (baskets); 0 = 7 % of the element count (at least 16)
+  std::uint32_t max_baskets = 0;     // N3 (baskets); 0 = enough that N2 * N3 exceeds the element count
   std::uint8_t operations = all_local_operations_2;
   /// Size-aware quality (6.1.5) with this size; shape quality (2.1.3) when empty.
   SizePolicy size;
@@ -57,7 +79,7 @@ struct ImprovementOptions2 {
 };
 
 struct ImprovementStats2 {
-  std::uint64_t iterations = 0;                   // Algorithm 35 iterations
+  std::uint64_t iterations = 0;                   // elements tried (Algorithm 35 iterations)
   std::array<std::uint64_t, 5> successes{};       // per operation, in the enum's bit order
   double initial_worst = 0.0, final_worst = 0.0;  // with the quality being optimised
   double initial_mean = 0.0, final_mean = 0.0;
