@@ -269,6 +269,7 @@ MeshDomainResult2 mesh_domain_2(const PlanarDomain& input, const MeshDomainOptio
   const PlanarDomain domain = scaled(input, -exponent);
   MeshDomainOptions2 options = input_options;
   options.size = detail::boundary_adapted_policy(domain, scaled(input_options.size, -exponent));
+  if (options.min_angle <= 0.0 && options.algorithm == MeshAlgorithm2::delaunay) options.min_angle = kDelaunayMinAngle;
   clock.lap("size field");
   const detail::DiscretizedBoundary boundary = discretize_valid_boundary(domain, options.size);
   result.stats.boundary_vertices = boundary.points.size();
