@@ -16,6 +16,7 @@
 #include "certimesh/predicates/orient2d.h"
 #include "certimesh/predicates/orient3d.h"
 #include "close_pairs.h"
+#include "domain_faces.h"
 #include "on_simplex.h"
 #include "rational.h"
 #include "stages.h"
@@ -34,6 +35,9 @@ struct Domain {
   // the winding number of the shells is non-zero (design decision 8): an inner shell oriented
   // inward bounds a cavity without a hole point.
   bool oriented = false;
+  // 2D (domain_faces.h): the segments with a domain face on a side; the others (eaten by a
+  // hole, or outside) need no coverage.
+  std::vector<char> needs_cover;
 };
 
 std::vector<Vec> points_of(const MeshView& g, const Index* ids, int count) {
@@ -389,6 +393,7 @@ Finding coverage(const MeshView& m, const FacetSet& b, const Domain& d, const st
   std::uint32_t stamp = 0;
   std::vector<SegmentChain> chains;
   for (std::size_t f = 0; f < d.facets.size(); ++f) {
+    if (!d.needs_cover.empty() && !d.needs_cover[f]) continue;
     const Index* x = d.facets.facet(f);
     std::vector<Edge> chain, edges_on_face, odd;
     std::vector<Index> path;
@@ -496,6 +501,22 @@ Finding holes_and_regions_3d(const MeshView& m, const FacetSet& b, const Compone
   return cavities_need_holes(b, comps, has_hole);
 }
 
+// 2D: the faces of the domain (domain_faces.h); every isolated domain vertex inside the domain
+// is a mesh vertex (design decision 8).
+Finding faces_and_isolated_vertices(const MeshView& m, const std::vector<Index>& lex, const io::MeshData& data, Domain& d) {
+  DomainFaces faces;
+  if (Finding f = domain_faces_2d(d.geo, d.facets, data.holes, faces); f.defect != Defect::none) return f;
+  d.needs_cover = std::move(faces.segment_bounds_domain);
+  for (Index v = 0; v < d.geo.vertex_count; ++v) {
+    if (!faces.isolated_in_domain[v] || find_vertex(m, lex, d.geo.xyz + 2 * static_cast<std::size_t>(v)) >= 0) continue;
+    char at[80];
+    std::snprintf(at, sizeof at, "(%.17g, %.17g)", d.geo.coord(v, 0), d.geo.coord(v, 1));
+    return finding(Defect::domain_boundary_not_covered, -1, -1, -1,
+                   "domain vertex " + std::to_string(v) + " " + at + ", on no segment and inside the domain, is not a mesh vertex");
+  }
+  return {};
+}
+
 }  // namespace
 
 Finding check_domain(const MeshView& m, const FacetSet& boundary, const Components& comps,
@@ -505,6 +526,7 @@ Finding check_domain(const MeshView& m, const FacetSet& boundary, const Componen
   d.tolerance = tolerance;
   stats.boundary_tolerance = tolerance;
   Finding f = load_domain(domain, m.dim, d);
+  if (f.defect == Defect::none && m.dim == 2) f = faces_and_isolated_vertices(m, lex_order, domain, d);
   if (f.defect != Defect::none) return f;
   const OnDomain on{incidences(m, d)};
   f = boundary_on_domain(m, boundary, d, on, stats);

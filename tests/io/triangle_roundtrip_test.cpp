@@ -112,6 +112,7 @@ TEST(TriangleRead, PolyWithHoleAndRegion) {
   expected.holes = {2, 2};
   expected.region_points = {0.5, 0.5};
   expected.region_attributes = {10};
+  expected.region_max_areas = {0.1};  // the regions' last column, a maximum area
   EXPECT_EQ(read_mesh(kData / "box.poly"), expected);
 }
 

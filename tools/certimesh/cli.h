@@ -65,6 +65,7 @@ struct MeshOptions {
   bool delaunay = false;     // --algorithm delaunay (default: front)
   bool improve = true;       // --no-improve turns the local-modification stage off
   bool quiet = false;        // --quiet: no progress, summary only
+  bool convex_hull = false;  // --convex-hull: the convex hull of the points as outer boundary (Triangle's -c)
 };
 
 /// `certimesh mesh DOMAIN -o OUT ...`: meshes DOMAIN, certifies the mesh with the independent

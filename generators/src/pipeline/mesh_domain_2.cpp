@@ -12,9 +12,11 @@
 #include "certimesh/generators/domain/domain_validation.h"
 #include "certimesh/generators/improvement/quality_improvement_2.h"
 #include "certimesh/topology/quality.h"
+#include "area_bound.h"
 #include "delaunay_completion.h"
 #include "domain_triangulation.h"
 #include "improvement_region.h"
+#include "isolated_vertices.h"
 #include "vertex_smoothing.h"
 #include "refinement_stage.h"
 #include "region_labels.h"
@@ -75,13 +77,26 @@ detail::DiscretizedBoundary discretize_valid_boundary(const PlanarDomain& domain
 struct Generated {
   std::vector<Point2> points;
   Triangles triangles;
-  std::vector<io::Label> labels;
+  std::vector<io::Label> labels;  // internal: the region's 1-based index, 0 for no region
   std::uint64_t completed_by_delaunay = 0;
 };
 
+// Inside the pipeline a triangle's label is its region's 1-based index (0: no seed), so that
+// each region's attribute, label and maximum area are looked up, whatever the seeds say.
+PlanarDomain with_indexed_regions(PlanarDomain domain) {
+  for (std::size_t r = 0; r < domain.regions.size(); ++r) domain.regions[r].label = static_cast<io::Label>(r + 1);
+  return domain;
+}
+
+std::vector<double> max_area_by_index(const PlanarDomain& domain) {
+  std::vector<double> out{-1.0};
+  for (const RegionSeed& r : domain.regions) out.push_back(r.max_area);
+  return out;
+}
+
 Generated advancing_front_stage(const detail::DomainTriangulation& dt, const detail::DiscretizedBoundary& boundary,
-                                const MeshDomainOptions2& options, const ProgressCallback& progress,
-                                StageClock& clock) {
+                                const detail::DomainClassification& c, const MeshDomainOptions2& options,
+                                const ProgressCallback& progress, StageClock& clock) {
   AdvancingFrontOptions front_options;
   front_options.size = options.size;
   front_options.max_global_retries = kMaxGlobalRetries;
@@ -96,11 +111,20 @@ Generated advancing_front_stage(const detail::DomainTriangulation& dt, const det
     clock.lap("delaunay completion");
   }
   out.labels = detail::region_labels(out.triangles, dt.front, dt.front_region, 0);
+  if (!c.isolated.empty()) {
+    detail::TriangleSoup soup{std::move(out.points), std::move(out.triangles), std::move(out.labels)};
+    detail::insert_isolated_vertices(soup, boundary.subsegments, c.isolated);
+    out.points = std::move(soup.points);
+    out.triangles = std::move(soup.triangles);
+    out.labels = std::move(soup.labels);
+    clock.lap("isolated vertices");
+  }
   return out;
 }
 
 // Improvement where the quality is below the target (improvement_region.h).
-void improvement_stage(Generated& g, const detail::DiscretizedBoundary& boundary, const MeshDomainOptions2& options,
+void improvement_stage(Generated& g, const detail::DiscretizedBoundary& boundary,
+                       std::span<const std::uint32_t> isolated, const MeshDomainOptions2& options,
                        const ProgressCallback& progress, MeshDomainStats2& stats) {
   ImprovementOptions2 improve;
   // Shape quality (improve.size left empty), not the size-aware one: the generator has
@@ -116,8 +140,11 @@ void improvement_stage(Generated& g, const detail::DiscretizedBoundary& boundary
     improve.target_quality = kFrontTargetQuality;
   }
   detail::TriangleSoup soup{std::move(g.points), std::move(g.triangles), std::move(g.labels)};
-  detail::smooth_poor_regions(soup, boundary.subsegments, improve.target_quality, kSmoothingSweeps);
-  const detail::RegionImprovementStats r = detail::improve_bad_region(soup, boundary.subsegments, improve, progress);
+  std::vector<DomainSegment> kept = boundary.subsegments;  // and an edge at each isolated vertex pins it
+  const std::vector<DomainSegment> pins = detail::pin_edges(soup, isolated);
+  kept.insert(kept.end(), pins.begin(), pins.end());
+  detail::smooth_poor_regions(soup, kept, improve.target_quality, kSmoothingSweeps);
+  const detail::RegionImprovementStats r = detail::improve_bad_region(soup, kept, improve, progress);
   stats.improved_region = r.region_triangles;
   stats.improvement_iterations = r.improvement.iterations;
   for (const std::uint64_t n : r.improvement.successes) stats.improvement_operations += n;
@@ -126,8 +153,11 @@ void improvement_stage(Generated& g, const detail::DiscretizedBoundary& boundary
   g.labels = std::move(soup.labels);
 }
 
-// The output: used vertices only, renumbered in first-use order of their ids (deterministic).
-io::MeshData to_output(const Generated& g, const detail::DiscretizedBoundary& boundary) {
+// The output: used vertices only, renumbered in first-use order of their ids (deterministic);
+// the domain's point markers on its vertices, a segment's marker on the Steiner points of its
+// subsegments (as Triangle does); region labels, and real attributes when some region's
+// attribute is not an integer.
+io::MeshData to_output(const Generated& g, const detail::DiscretizedBoundary& boundary, const PlanarDomain& domain) {
   constexpr std::uint32_t unused = UINT32_MAX;
   std::vector<std::uint32_t> new_id(g.points.size(), unused);
   for (std::uint32_t v = 0; v < boundary.points.size(); ++v) new_id[v] = v;  // boundary first, as given
@@ -149,12 +179,26 @@ io::MeshData to_output(const Generated& g, const detail::DiscretizedBoundary& bo
   for (const auto& t : g.triangles) {
     for (const std::uint32_t v : t) out.triangles.push_back(new_id[v]);
   }
-  out.triangle_labels = g.labels;
+  const bool real = std::any_of(domain.regions.begin(), domain.regions.end(), [](const RegionSeed& r) {
+    return attribute_of(r) != static_cast<double>(r.label);
+  });
+  for (const io::Label index : g.labels) {  // the internal 1-based region index
+    const RegionSeed* r = index > 0 ? &domain.regions[static_cast<std::size_t>(index - 1)] : nullptr;
+    out.triangle_labels.push_back(r ? r->label : 0);
+    if (real) out.triangle_attributes.push_back(r ? attribute_of(*r) : 0.0);
+  }
+  out.point_labels.assign(next, 0);
   for (const DomainSegment& s : boundary.subsegments) {
     out.segments.push_back(new_id[s.a]);
     out.segments.push_back(new_id[s.b]);
     out.segment_labels.push_back(s.label);
+    for (const std::uint32_t v : {s.a, s.b})
+      if (v >= domain.points.size()) out.point_labels[new_id[v]] = s.label;
   }
+  for (std::uint32_t v = 0; v < domain.point_labels.size(); ++v) out.point_labels[v] = domain.point_labels[v];
+  if (std::all_of(out.point_labels.begin(), out.point_labels.end(), [](io::Label l) { return l == 0; })) out.point_labels.clear();
+  if (std::all_of(out.segment_labels.begin(), out.segment_labels.end(), [](io::Label l) { return l == 0; })) out.segment_labels.clear();
+  if (std::all_of(out.triangle_labels.begin(), out.triangle_labels.end(), [](io::Label l) { return l == 0; })) out.triangle_labels.clear();
   return out;
 }
 
@@ -178,30 +222,45 @@ void quality_statistics(const io::MeshData& mesh, MeshDomainStats2& stats) {
 
 }  // namespace
 
-MeshDomainResult2 mesh_domain_2(const PlanarDomain& domain, const MeshDomainOptions2& options,
+MeshDomainResult2 mesh_domain_2(const PlanarDomain& input, const MeshDomainOptions2& options,
                                 const ProgressCallback& progress) {
   MeshDomainResult2 result;
   StageClock clock(result.stats.timings);
-  refuse_if_invalid(domain);
+  refuse_if_invalid(input);
   clock.lap("validation");
-  const detail::DiscretizedBoundary boundary = discretize_valid_boundary(domain, options.size);
+  const detail::DomainClassification c = detail::classify_domain(with_indexed_regions(input), progress);
+  result.stats.eaten_segments = c.eaten_segments;
+  result.stats.dropped_vertices = c.dropped_vertices;
+  result.stats.isolated_vertices = c.isolated.size();
+  const PlanarDomain& domain = c.kept;
+  clock.lap("domain triangulation");
+  detail::DiscretizedBoundary boundary = discretize_valid_boundary(domain, options.size);
   result.stats.boundary_vertices = boundary.points.size();
   clock.lap("boundary");
-  const detail::DomainTriangulation dt = detail::triangulate_domain(domain, boundary, progress);
-  clock.lap("domain triangulation");
   Generated generated;
   if (options.algorithm == MeshAlgorithm2::advancing_front) {
-    generated = advancing_front_stage(dt, boundary, options, progress, clock);
+    generated = advancing_front_stage(detail::front_of(c, boundary), boundary, c, options, progress, clock);
   } else {
     const detail::RefinedTriangulation refined = detail::refine_domain(domain, boundary, options.size, progress);
     generated = Generated{refined.points, refined.triangles, refined.labels, 0};
     clock.lap("delaunay refinement");
   }
   if (options.improve) {
-    improvement_stage(generated, boundary, options, progress, result.stats);
+    improvement_stage(generated, boundary, c.isolated, options, progress, result.stats);
     clock.lap("improvement");
   }
-  result.mesh = to_output(generated, boundary);
+  const std::vector<double> max_area = max_area_by_index(domain);
+  if (std::any_of(max_area.begin(), max_area.end(), [](double a) { return a > 0; })) {
+    detail::TriangleSoup soup{std::move(generated.points), std::move(generated.triangles), std::move(generated.labels)};
+    result.stats.area_bisections = detail::enforce_max_areas(soup, boundary, domain, max_area);
+    generated.points = std::move(soup.points);
+    generated.triangles = std::move(soup.triangles);
+    generated.labels = std::move(soup.labels);
+    clock.lap("maximum areas");
+  }
+  PlanarDomain labelled = domain;  // the seeds' own labels for the output
+  labelled.regions = input.regions;
+  result.mesh = to_output(generated, boundary, labelled);
   result.stats.completed_by_delaunay = generated.completed_by_delaunay;
   quality_statistics(result.mesh, result.stats);
   return result;

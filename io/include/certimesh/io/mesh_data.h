@@ -30,12 +30,18 @@ struct MeshData {
   std::vector<Label> triangle_labels;
   std::vector<Index> tetrahedra;
   std::vector<Label> tetrahedron_labels;
+  // A real element attribute of the 2D triangles (Triangle's regional attribute when it is not
+  // an integer): empty, or one per triangle. The .ele format writes it instead of the labels;
+  // the other formats keep only the labels (then the region's index, see docs/formats.md).
+  std::vector<double> triangle_attributes;
 
   // Domain description (.poly only): hole points (`dimension` coordinates each) and region
-  // points with their attribute (Triangle/TetGen regional attributes).
+  // points with their attribute (Triangle/TetGen regional attributes) and their maximum area
+  // or volume (the optional last column; negative when the file gives none).
   std::vector<double> holes;
   std::vector<double> region_points;
   std::vector<double> region_attributes;
+  std::vector<double> region_max_areas;  // empty, or one per region point
 
   std::size_t point_count() const { return coordinates.size() / static_cast<std::size_t>(dimension); }
   std::size_t segment_count() const { return segments.size() / 2; }
