@@ -16,7 +16,10 @@ with exact fractions by oracles of this file, not by certimesh:
     marked segment; Gmsh physical tags of the segments;
   * --convex-hull: the mesh's area is the hull's (monotone chain here), every point a vertex;
   * a hole point outside every face is refused with `error:` naming it, by `mesh` (exit 1)
-    and by `check --domain` (exit 1), and no file is written.
+    and by `check --domain` (exit 1), and no file is written;
+  * `check --domain` refuses a mesh that leaves a domain face unmeshed beside an eaten segment
+    or an isolated domain vertex out, and accepts one against a domain whose extra segments
+    and vertices are all eaten or outside (domains built here with known faces).
 Usage: cli_planar_input_test.py CERTIMESH.
 """
 import os
@@ -320,10 +323,50 @@ def case_refusals(c, options):
             fail(c.name, f"isolated vertex {extra}: exit {r.returncode}, {r.stderr.strip()!r}")
 
 
+def case_certificate(c, options):
+    """`check --domain` reads the domain by the same rules, and refuses a mesh that leaves out
+    what the rules keep: each mesh here is checked against domains whose faces are known by
+    construction (a domain face left unmeshed, an isolated vertex that is not a mesh vertex)."""
+    pts, segs = square(4)
+    plain = c.poly[:-5] + "_plain.poly"
+    write_poly(plain, pts, segs)
+    holed = c.poly[:-5] + "_holed.poly"
+    hole_pts = pts + [(1, 1), (3, 1), (3, 3), (1, 3)]
+    hole_segs = segs + [(4, 5), (5, 6), (6, 7), (7, 4)]
+    write_poly(holed, hole_pts, hole_segs, holes=[(2, 2)])
+    meshes = {}
+    for name, poly in (("plain", plain), ("holed", holed)):
+        out = f"{c.out}_{name}"
+        r = run(c.certimesh, "mesh", poly, "-o", out + ".node", "--quiet", *options)
+        if r.returncode != 0:
+            fail(c.name, f"mesh {name}: {r.stderr.strip()}")
+            return
+        meshes[name] = out + ".ele"
+    island = [("1.25", "1.25"), ("1.75", "1.25"), ("1.5", "1.75")]
+    outside = [(5, 0), (6, 0), (6, 1)]
+    verdicts = [  # (mesh, points, segments, holes, valid?, what the refusal names)
+        ("plain", pts + outside, segs + [(4, 5), (5, 6), (6, 4)], [], False, "not covered"),
+        ("plain", pts + outside, segs + [(4, 5), (5, 6), (6, 4)], [("5.75", "0.25")], True, ""),
+        ("plain", pts + [(1, 1)], segs, [], False, "domain vertex 4"),
+        ("plain", pts + [(10, 10)], segs, [], True, ""),
+        ("plain", pts + [(5, 0), (6, 1)], segs + [(4, 5)], [], True, ""),
+        ("holed", hole_pts + island, hole_segs + [(8, 9), (9, 10), (10, 8)], [(2, 2)], False, "not covered"),
+        ("holed", hole_pts + island, hole_segs + [(8, 9), (9, 10), (10, 8)], [(2, 2), ("1.5", "1.4")], True, ""),
+        ("holed", hole_pts + island[:2], hole_segs + [(8, 9)], [(2, 2)], True, ""),
+        ("holed", hole_pts + [("1.5", "1.5")], hole_segs, [(2, 2)], True, ""),
+    ]
+    for k, (mesh, p, s, h, valid, words) in enumerate(verdicts):
+        domain = f"{c.poly[:-5]}_domain{k}.poly"
+        write_poly(domain, p, s, holes=h)
+        r = run(c.certimesh, "check", meshes[mesh], "--domain", domain)
+        if (r.returncode == 0) != valid or (not valid and (r.returncode != 1 or words not in r.stdout)):
+            fail(c.name, f"domain {k} against the {mesh} mesh: exit {r.returncode}, {r.stdout.strip()[-200:]}")
+
+
 def main():
     certimesh = sys.argv[1]
     cases = [case_isolated, case_cuts, case_eaten, case_island_in_hole, case_attributes, case_max_area,
-             case_markers, case_convex_hull, case_hole_outside, case_refusals]
+             case_markers, case_convex_hull, case_hole_outside, case_refusals, case_certificate]
     with tempfile.TemporaryDirectory() as work:
         for options in ((), ("--size", "0.4"), ("--algorithm", "delaunay")):
             tag = "_".join(o.strip("-") for o in options) or "default"

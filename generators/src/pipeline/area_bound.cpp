@@ -3,8 +3,10 @@
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
+#include <memory>
 #include <unordered_map>
 
+#include "certimesh/generators/delaunay/constrained_delaunay_2.h"
 #include "certimesh/predicates/orient2d.h"
 #include "point_on_segment.h"
 
@@ -146,6 +148,50 @@ class Bisection {
 };
 
 }  // namespace
+
+namespace {
+
+// Point -> region by a walk from the last answer (the generators query nearby points in turn).
+struct RegionLocator {
+  ConstrainedDelaunay2 cdt;
+  std::vector<int> labels;
+  ConstrainedDelaunay2::TriangleId hint = ConstrainedDelaunay2::none;
+  explicit RegionLocator(const PlanarDomain& d) : cdt(d.points) {
+    for (const DomainSegment& s : d.segments) cdt.insert_constraint(s.a, s.b);
+    labels = cdt.classify(d.holes, d.regions);
+  }
+  int region_at(const Point2& p) {
+    hint = cdt.locate(p, hint);
+    if (hint == ConstrainedDelaunay2::none || cdt.is_ghost(hint)) {
+      hint = ConstrainedDelaunay2::none;
+      return -1;
+    }
+    return labels[hint];
+  }
+};
+
+}  // namespace
+
+SizePolicy size_for_max_areas(const SizePolicy& size, const PlanarDomain& domain, std::span<const double> max_area) {
+  if (std::none_of(max_area.begin(), max_area.end(), [](double a) { return a > 0; })) return size;
+  double longest = 0.0;
+  for (const DomainSegment& s : domain.segments) longest = std::max(longest, std::sqrt(squared_length(domain.points[s.a], domain.points[s.b])));
+  std::vector<double> side(max_area.size(), 0.0);  // 0: no bound
+  constexpr double kEquilateralSide = 1.5196713713031850;  // sqrt(4 / sqrt(3)): side of area 1
+  for (std::size_t r = 0; r < max_area.size(); ++r) side[r] = max_area[r] > 0 ? 0.8 * kEquilateralSide * std::sqrt(max_area[r]) : 0.0;
+  // Automatic mode outside the bounded regions: twice their largest side (a step the front and
+  // the refinement grade across smoothly), at most the longest segment.
+  const double unbounded = std::min(longest, 2 * *std::max_element(side.begin(), side.end()));
+  auto locator = std::make_shared<RegionLocator>(domain);
+  SizePolicy out = size;
+  out.size_function = [base = size, unbounded, side = std::move(side), locator](const Point2& p) {
+    const double elsewhere = base.automatic() ? unbounded : base.at(p);
+    const int r = locator->region_at(p);
+    const double bound = r >= 0 && static_cast<std::size_t>(r) < side.size() ? side[static_cast<std::size_t>(r)] : 0.0;
+    return bound > 0 ? std::min(elsewhere, bound) : elsewhere;
+  };
+  return out;
+}
 
 bool area_within(const Point2& a, const Point2& b, const Point2& c, double bound) {
   const double left = (a.x - c.x) * (b.y - c.y), right = (a.y - c.y) * (b.x - c.x);

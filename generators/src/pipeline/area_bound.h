@@ -12,9 +12,18 @@
 
 #include "boundary_discretization.h"
 #include "certimesh/generators/domain/planar_domain.h"
+#include "certimesh/generators/size_policy.h"
 #include "improvement_region.h"
 
 namespace certimesh::generators::detail {
+
+/// The size policy that makes the generators aim at the regions' maximum areas: inside a
+/// region with bound A at most 0.8 times the side of an equilateral triangle of area A, elsewhere
+/// `size` (or, when `size` is automatic, twice the largest such side, at most the longest
+/// input segment: then the whole mesh is sized, so that sizes grade across region interfaces). `size` itself when no region has a bound. The region of
+/// a point comes from a walk in the constrained Delaunay triangulation of `domain` (regions
+/// labelled by their 1-based index, as inside the pipeline).
+SizePolicy size_for_max_areas(const SizePolicy& size, const PlanarDomain& domain, std::span<const double> max_area);
 
 /// Whether the area of triangle (a, b, c) is certainly at most `bound` (> 0): the doubled area
 /// from orient2d's determinant, with its rounding error bound and a relative margin of 1e-12

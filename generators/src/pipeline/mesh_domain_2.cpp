@@ -233,15 +233,18 @@ MeshDomainResult2 mesh_domain_2(const PlanarDomain& input, const MeshDomainOptio
   result.stats.dropped_vertices = c.dropped_vertices;
   result.stats.isolated_vertices = c.isolated.size();
   const PlanarDomain& domain = c.kept;
+  const std::vector<double> max_area = max_area_by_index(domain);
+  MeshDomainOptions2 sized = options;  // aiming at the regions' maximum areas, if any
+  sized.size = detail::size_for_max_areas(options.size, domain, max_area);
   clock.lap("domain triangulation");
-  detail::DiscretizedBoundary boundary = discretize_valid_boundary(domain, options.size);
-  result.stats.boundary_vertices = boundary.points.size();
+  detail::DiscretizedBoundary boundary = discretize_valid_boundary(domain, sized.size);
+  result.stats.boundary_vertices = boundary.points.size() - c.isolated.size();
   clock.lap("boundary");
   Generated generated;
   if (options.algorithm == MeshAlgorithm2::advancing_front) {
-    generated = advancing_front_stage(detail::front_of(c, boundary), boundary, c, options, progress, clock);
+    generated = advancing_front_stage(detail::front_of(c, boundary), boundary, c, sized, progress, clock);
   } else {
-    const detail::RefinedTriangulation refined = detail::refine_domain(domain, boundary, options.size, progress);
+    const detail::RefinedTriangulation refined = detail::refine_domain(domain, boundary, sized.size, progress);
     generated = Generated{refined.points, refined.triangles, refined.labels, 0};
     clock.lap("delaunay refinement");
   }
@@ -249,7 +252,6 @@ MeshDomainResult2 mesh_domain_2(const PlanarDomain& input, const MeshDomainOptio
     improvement_stage(generated, boundary, c.isolated, options, progress, result.stats);
     clock.lap("improvement");
   }
-  const std::vector<double> max_area = max_area_by_index(domain);
   if (std::any_of(max_area.begin(), max_area.end(), [](double a) { return a > 0; })) {
     detail::TriangleSoup soup{std::move(generated.points), std::move(generated.triangles), std::move(generated.labels)};
     result.stats.area_bisections = detail::enforce_max_areas(soup, boundary, domain, max_area);
