@@ -393,18 +393,26 @@ Finding coverage(const MeshView& m, const FacetSet& b, const Domain& d, const st
   std::uint32_t stamp = 0;
   std::vector<SegmentChain> chains;
   for (std::size_t f = 0; f < d.facets.size(); ++f) {
-    if (!d.needs_cover.empty() && !d.needs_cover[f]) continue;
+    const bool optional = !d.needs_cover.empty() && !d.needs_cover[f];  // eaten: covered or not at all
     const Index* x = d.facets.facet(f);
     std::vector<Edge> chain, edges_on_face, odd;
     std::vector<Index> path;
-    for (int i = 0; i < (m.dim == 2 ? 1 : 3); ++i) {
-      if (!walk(m, edges, lex, d.tolerance, d.geo.xyz + static_cast<std::size_t>(x[i]) * m.dim, d.geo.xyz + static_cast<std::size_t>(x[(i + 1) % m.dim]) * m.dim, path, seen, ++stamp))
+    bool complete = true;
+    for (int i = 0; i < (m.dim == 2 ? 1 : 3) && complete; ++i) {
+      const bool covered = walk(m, edges, lex, d.tolerance, d.geo.xyz + static_cast<std::size_t>(x[i]) * m.dim,
+                                d.geo.xyz + static_cast<std::size_t>(x[(i + 1) % m.dim]) * m.dim, path, seen, ++stamp);
+      complete = covered;
+      if (!covered && optional) break;
+      if (!covered)
         return finding(Defect::domain_boundary_not_covered, -1, static_cast<std::int64_t>(f), -1,
                        "domain facet " + std::to_string(f) + ": its edge from domain vertex " + std::to_string(x[i]) + " to " +
                            std::to_string(x[(i + 1) % m.dim]) + " is not covered by mesh edges on it");
       for (std::size_t k = 0; k + 1 < path.size(); ++k) chain.push_back(std::minmax(path[k], path[k + 1]));
     }
     if (m.dim == 2) {
+      // An eaten segment that the mesh covers anyway keeps its chain, so that a mesh reaching
+      // into a hole face is refused where it is plainest (6e: the hole point is covered).
+      if (!complete) continue;
       chains.push_back({static_cast<std::int64_t>(f), std::move(path)});
       continue;
     }

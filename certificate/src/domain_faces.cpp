@@ -131,6 +131,8 @@ Finding domain_faces_2d(const MeshView& geo, const FacetSet& segments, const std
     // direction pi (the face around the component) is left of the last one counterclockwise.
     faces.unite(cycle[around.back()], face_of(answers[q]));
   }
+  // A hole point on a segment is classified into the face just above-left of it; the hole
+  // check (6e) refuses it anyway whenever the mesh reaches it.
   std::vector<char> has_hole(cycles + 1, 0);
   for (std::size_t h = 0; h < holes.size() / 2; ++h) {
     const std::size_t face = faces.find(face_of(answers[component_queries + h]));

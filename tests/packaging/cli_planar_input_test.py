@@ -301,6 +301,14 @@ def case_hole_outside(c, options):
         fail(c.name, f"mesh: exit {r.returncode}, stderr {r.stderr.strip()!r}")
     if os.path.exists(c.out + ".node"):
         fail(c.name, "a file was written")
+    # Neighbours: a hole point on a segment or at a segment's vertex does not say which face it
+    # empties (the ring or the inner square): refused by name too.
+    for k, hole in enumerate(((2, 1), (3, 3))):
+        on = f"{c.poly[:-5]}_on{k}.poly"
+        write_poly(on, pts + [(1, 1), (3, 1), (3, 3), (1, 3)], segs + [(4, 5), (5, 6), (6, 7), (7, 4)], holes=[hole])
+        r = run(c.certimesh, "mesh", on, "-o", c.out + f"_on{k}.node", "--quiet", *options)
+        if r.returncode != 1 or "hole point 0" not in r.stderr or "lies on" not in r.stderr:
+            fail(c.name, f"hole point {hole} on a segment: exit {r.returncode}, {r.stderr.strip()!r}")
     good = c.poly[:-5] + "_good.poly"
     write_poly(good, pts, segs)
     r = run(c.certimesh, "mesh", good, "-o", c.out + "_good.node", "--quiet", *options)

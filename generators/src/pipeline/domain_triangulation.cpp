@@ -8,6 +8,7 @@
 
 #include "certimesh/generators/domain/domain_problem.h"
 #include "certimesh/io/mesh_file.h"
+#include "certimesh/predicates/orient2d.h"
 
 namespace certimesh::generators::detail {
 
@@ -81,14 +82,41 @@ bool has_bounded_face(const ConstrainedDelaunay2& cdt) {
   return std::any_of(without_holes.begin(), without_holes.end(), [](int label) { return label >= 0; });
 }
 
+// Whether p, in the closed triangle t, lies on a segment: then on a constrained edge of t (every
+// segment is one), or at a vertex of t that is on a segment. Empty if not, else what it is on.
+std::string on_a_segment(const ConstrainedDelaunay2& cdt, std::uint32_t t, const Point2& p,
+                         const std::vector<std::uint8_t>& on_segment) {
+  const auto v = cdt.vertices(t);
+  for (int i = 0; i < 3; ++i) {
+    const Point2& a = cdt.point(v[static_cast<std::size_t>((i + 1) % 3)]);
+    const Point2& b = cdt.point(v[static_cast<std::size_t>((i + 2) % 3)]);
+    if (cdt.is_constrained(t, i) && predicates::orient2d(a, b, p) == predicates::Sign::zero)
+      return "the segment (" + point_text(a) + ")-(" + point_text(b) + ")";
+  }
+  for (const std::uint32_t w : v)
+    if (cdt.point(w) == p && w < on_segment.size() && on_segment[w]) return "vertex " + std::to_string(w) + " of a segment";
+  return {};
+}
+
 // A hole point in no bounded face (outside the hull, or in a triangle the hull reaches
-// without crossing a segment) is a user error (design decision 8).
+// without crossing a segment) is a user error (design decision 8); so is one on a segment.
 void refuse_holes_outside(const ConstrainedDelaunay2& cdt, const PlanarDomain& domain) {
   const std::vector<int> unbounded = cdt.classify({}, {});
+  std::vector<std::uint8_t> on_segment(domain.points.size(), 0);
+  for (const DomainSegment& s : domain.segments) on_segment[s.a] = on_segment[s.b] = 1;
   std::vector<DomainProblem> problems;
   for (std::uint32_t h = 0; h < domain.holes.size() && problems.size() < 16; ++h) {
     const auto t = cdt.locate(domain.holes[h]);
-    if (t != ConstrainedDelaunay2::none && !cdt.is_ghost(t) && unbounded[t] >= 0) continue;
+    if (t != ConstrainedDelaunay2::none && !cdt.is_ghost(t) && unbounded[t] >= 0) {
+      if (const std::string on = on_a_segment(cdt, t, domain.holes[h], on_segment); !on.empty()) {
+        DomainProblem p;
+        p.kind = DomainProblemKind::hole_outside_domain;
+        p.message = "hole point " + std::to_string(h) + " (" + point_text(domain.holes[h]) + ") lies on " + on +
+                    ": it does not say which face it empties";
+        problems.push_back(std::move(p));
+      }
+      continue;
+    }
     DomainProblem p;
     p.kind = DomainProblemKind::hole_outside_domain;
     p.message = "hole point " + std::to_string(h) + " (" + point_text(domain.holes[h]) +
