@@ -11,7 +11,8 @@ against the file itself, and checked here with exact fractions:
     point; for a .node, the area of the convex hull (monotone chain here).
 box.poly is Triangle's example for -c (its segments alone bound only the hole): without
 --convex-hull it is refused as an empty domain, with it the mesh covers the hull minus the
-hole. Prints the count and time of each. Usage: cli_triangle_examples_test.py CERTIMESH DIR.
+hole; every other .poly is also meshed with --convex-hull and certified against the domain it
+saved. Prints the count and time of each. Usage: cli_triangle_examples_test.py CERTIMESH DIR.
 """
 import os
 import subprocess
@@ -144,6 +145,9 @@ def main():
         if r.returncode != 1 or "error:" not in r.stderr or "empty" not in r.stderr:
             fail("box.poly", f"without --convex-hull: exit {r.returncode}, {r.stderr.strip()}")
         mesh_one(certimesh, box, work, ("--convex-hull",))
+        for f in files:  # Triangle's -c on every .poly: the hull of its points, holes still eat
+            if f.endswith(".poly") and f != "box.poly":
+                mesh_one(certimesh, os.path.join(data, f), work, ("--convex-hull",))
         pts, _, _ = read_poly(box)
         # the hull of box.poly is [0,3]^2, its hole the square [1,2]^2
         base = os.path.join(work, "box_polyconvex-hull")

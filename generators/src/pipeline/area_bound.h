@@ -22,7 +22,9 @@ namespace certimesh::generators::detail {
 /// `size` (or, when `size` is automatic, twice the largest such side, at most the longest
 /// input segment: then the whole mesh is sized, so that sizes grade across region interfaces). `size` itself when no region has a bound. The region of
 /// a point comes from a walk in the constrained Delaunay triangulation of `domain` (regions
-/// labelled by their 1-based index, as inside the pipeline).
+/// labelled by their 1-based index, as inside the pipeline), from where the previous query
+/// ended: a few steps for the generators' nearby queries, O(number of input vertices) per query
+/// in the worst case.
 SizePolicy size_for_max_areas(const SizePolicy& size, const PlanarDomain& domain, std::span<const double> max_area);
 
 /// Whether the area of triangle (a, b, c) is certainly at most `bound` (> 0): the doubled area

@@ -16,8 +16,11 @@ namespace certimesh::generators::detail {
 
 /// Makes every vertex of `isolated` (ids into mesh.points, used by no triangle, inside the
 /// meshed region, on no `constrained` edge) a vertex of the mesh. A generated vertex with the
-/// same coordinates is replaced by it. Cost O(n + k log k) for n triangles (a uniform grid
-/// locates the points; each cavity is local).
+/// same coordinates is replaced by it. Cost: O(n + c + k log k) for n triangles and k points,
+/// c the number of grid cells the triangles' boxes cover (a uniform grid of about n cells
+/// locates the points; the cavities are re-triangulated together): linear for the advancing
+/// front's well-shaped triangles; a mesh of long slivers crossing the domain is the worst case,
+/// O(n^1.5) cells.
 void insert_isolated_vertices(TriangleSoup& mesh, std::span<const DomainSegment> constrained,
                               std::span<const std::uint32_t> isolated);
 
