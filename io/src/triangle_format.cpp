@@ -90,7 +90,7 @@ Label read_marker(TextReader& in, std::string_view what) {
 
 // Element attributes are labels when every one is an integer in range (the common case, and
 // the reading of a material id); otherwise they are kept as reals (Triangle's regional
-// attributes such as 0.05) and the labels stay empty.
+// attributes such as 0.05) and the labels are labels_of_attributes of them.
 bool integral_label(double value) {
   return std::trunc(value) == value && value >= std::numeric_limits<Label>::min() &&
          value <= std::numeric_limits<Label>::max();
@@ -180,7 +180,10 @@ void read_cells(TextReader& in, const CellSection& section, const PointNumbering
     in.end_record("the " + section.what);
   }
   attributes_to_labels(real_attributes, labels);
-  if (!real_attributes.empty()) *attributes = std::move(real_attributes);
+  if (!real_attributes.empty()) {  // labels too, for the formats that keep only integers
+    labels = labels_of_attributes(real_attributes);
+    *attributes = std::move(real_attributes);
+  }
   detail::drop_all_zero(labels);
 }
 

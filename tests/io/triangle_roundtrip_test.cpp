@@ -86,6 +86,7 @@ TEST(TriangleRoundTrip, RealElementAttributesAndRegionAreas) {
   mesh.coordinates = {0, 0, 1, 0, 1, 1, 0, 1};
   mesh.triangles = {0, 1, 2, 0, 2, 3};
   mesh.triangle_attributes = {0.05, 2.5};
+  mesh.triangle_labels = {1, 2};  // each distinct attribute's rank, for the integer-only formats
   const fs::path path = folder() / "real.ele";
   write_triangle_format(mesh, path);
   std::ifstream ele(path);
@@ -93,6 +94,7 @@ TEST(TriangleRoundTrip, RealElementAttributesAndRegionAreas) {
   EXPECT_EQ(text, "2 3 1\n1 1 2 3 0.05\n2 1 3 4 2.5\n");  // Triangle's layout, by hand
   EXPECT_TRUE(identical(read_triangle_format(path), mesh));
   mesh.triangle_attributes = {3.0, -2.0};  // integers: labels, as before
+  mesh.triangle_labels.clear();
   write_triangle_format(mesh, path);
   MeshData labelled = mesh;
   labelled.triangle_attributes.clear();

@@ -187,6 +187,7 @@ io::MeshData to_output(const Generated& g, const detail::DiscretizedBoundary& bo
     out.triangle_labels.push_back(r ? r->label : 0);
     if (real) out.triangle_attributes.push_back(r ? attribute_of(*r) : 0.0);
   }
+  if (real) out.triangle_labels = io::labels_of_attributes(out.triangle_attributes);  // as the .ele reader makes them
   out.point_labels.assign(next, 0);
   for (const DomainSegment& s : boundary.subsegments) {
     out.segments.push_back(new_id[s.a]);
