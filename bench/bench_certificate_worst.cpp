@@ -85,6 +85,8 @@ void run_cgal(benchmark::State& state, Case* c) {
 
 Shape star(int k) { return {certimesh::fuzz::star_fan_2d(k), {}, false}; }
 Shape book(int k) { return {certimesh::fuzz::book_3d(k), {}, false}; }
+Shape pinwheel(int k) { return {certimesh::fuzz::pinwheel_2d(k), {}, false}; }
+Shape open_book(int k) { return {certimesh::fuzz::open_book_3d(k), {}, false}; }
 Shape rings(int k) { return {certimesh::fuzz::nested_rings_2d(k), {}, false}; }
 Shape holes(int n) {
   Shape s;
@@ -108,11 +110,15 @@ int main(int argc, char** argv) {
   if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
   auto sized = [&](double n) { return std::max(4, static_cast<int>(n * scale)); };
   // Full size: 200,000 triangles; 250,000 triangles and 61,250 hole points; 100,000
-  // triangles in 12,500 nested rings; the 3D fan at 2,000 tetrahedra (it is quadratic).
+  // triangles in 12,500 nested rings; the 3D fan at 2,000 tetrahedra (it is quadratic);
+  // 100,000 parts pinched at one vertex; 1,000 tetrahedra in every other wedge around one edge
+  // (the 3D embedding's box grid is quadratic on it, like book_3d).
   static Case cases[] = {{"star_fan_2d", star, sized(100000), {}, false},
                          {"holey_grid_2d_with_domain", holes, std::max(9, static_cast<int>(495 * std::sqrt(scale))), {}, false},
                          {"nested_rings_2d", rings, sized(12500), {}, false},
-                         {"book_3d", book, sized(2000), {}, false}};
+                         {"book_3d", book, sized(2000), {}, false},
+                         {"pinwheel_2d", pinwheel, sized(100000), {}, false},
+                         {"open_book_3d", open_book, sized(1000), {}, false}};
   for (Case& c : cases) {
     benchmark::RegisterBenchmark(("BM_worst_" + c.name + "_certimesh").c_str(), run_certimesh, &c)->Unit(benchmark::kMillisecond);
     benchmark::RegisterBenchmark(("BM_worst_" + c.name + "_cgal_reference").c_str(), run_cgal, &c)->Unit(benchmark::kMillisecond);

@@ -1,13 +1,28 @@
-// Condition 4, first half: the unmatched facets form a closed manifold (2D: disjoint loops;
-// 3D: closed surfaces, each edge in two boundary triangles with opposite orientations, each
-// vertex's link a single cycle), split into connected components.
+// Condition 4, first half: the unmatched facets split into closed curves (2D) / closed
+// surfaces (3D) that touch only at pinches (design decision 8: two parts sharing a corner, a
+// hole touching the outer loop, two solids sharing a vertex or an edge).
+//
+// 2D: at a boundary vertex the boundary edges, in counterclockwise order, must alternate
+// between leaving and entering (the winding number then takes two consecutive values around
+// the vertex); each entering edge is followed by the edge after it in that order, which
+// leaves. 3D: around a boundary edge the boundary triangles, in their order around the edge,
+// must alternate in the direction they give the edge; each triangle is paired with its
+// neighbour across the sector in front of both. At a vertex nothing more is needed: with every
+// edge paired, the link of the vertex is a union of cycles, one disk of surface each.
+// Both pairings are across the sector of lower winding number (outside the mesh), so every
+// curve / surface bounds one unmeshed face on its outer side (proofs/mesh_certificate.md,
+// section 2: why this pairing keeps the single-cover argument and the hole rules true).
 #include <algorithm>
 #include <numeric>
 
+#include "certimesh/predicates/orient2d.h"
+#include "certimesh/predicates/orient3d.h"
 #include "stages.h"
 
 namespace certimesh::certificate::detail {
 namespace {
+
+using predicates::Sign;
 
 struct UnionFind {
   std::vector<std::size_t> parent;
@@ -27,20 +42,89 @@ Finding pinch(const FacetSet& b, std::size_t f, Index v, const std::string& why)
                  "the boundary is not a manifold at vertex " + std::to_string(v) + ": " + why);
 }
 
-// 2D: exactly one boundary edge leaves and one enters every boundary vertex.
-Finding loops_2d(const MeshView& m, const FacetSet& b, UnionFind& uf) {
-  std::vector<std::size_t> leaving(m.vertex_count, SIZE_MAX);
-  std::vector<std::uint8_t> in(m.vertex_count, 0), out(m.vertex_count, 0);
-  for (std::size_t f = 0; f < b.size(); ++f) {
-    const Index u = b.facet(f)[0], w = b.facet(f)[1];
-    if (++out[u] > 1) return pinch(b, f, u, "two boundary edges leave it");
-    if (++in[w] > 1) return pinch(b, f, w, "two boundary edges enter it");
-    leaving[u] = f;
+// Two boundary facets that leave a vertex (2D) or an edge (3D) in the same direction overlap:
+// the first such pair, reported by the embedding's own exact rules once no vertex or edge is
+// non-manifold (non_manifold_boundary comes first in defect.h).
+struct Overlap {
+  std::size_t a = SIZE_MAX, b = SIZE_MAX;
+  void note(std::size_t x, std::size_t y) {
+    if (a == SIZE_MAX) a = x, b = y;
   }
-  for (std::size_t f = 0; f < b.size(); ++f) {
-    const Index w = b.facet(f)[1];
-    if (leaving[w] == SIZE_MAX) return pinch(b, f, w, "a boundary edge ends there");
-    uf.unite(f, leaving[w]);
+};
+
+// The boundary facets at each vertex (2D) as one array sliced by vertex.
+struct Stars {
+  std::vector<std::size_t> start, facets;
+};
+
+Stars stars_2d(const MeshView& m, const FacetSet& b) {
+  Stars s;
+  s.start.assign(m.vertex_count + 1, 0);
+  for (Index v : b.vertices) ++s.start[v + 1];
+  for (std::size_t v = 0; v < m.vertex_count; ++v) s.start[v + 1] += s.start[v];
+  s.facets.resize(b.vertices.size());
+  std::vector<std::size_t> fill(s.start.begin(), s.start.end() - 1);
+  for (std::size_t i = 0; i < b.vertices.size(); ++i) s.facets[fill[b.vertices[i]]++] = i / 2;
+  return s;
+}
+
+// Counterclockwise order of the boundary edges at v by the direction to their other end,
+// starting at the direction (1, 0): the upper half (other end lexicographically after v in
+// (y, x): the sweep's order) first, then the lower half; exact orient2d within a half.
+struct CcwAround {
+  const MeshView* m;
+  const FacetSet* b;
+  Index v;
+  Index far(std::size_t f) const { return b->facet(f)[0] == v ? b->facet(f)[1] : b->facet(f)[0]; }
+  bool upper(Index u) const {
+    return m->coord(u, 1) != m->coord(v, 1) ? m->coord(u, 1) > m->coord(v, 1) : m->coord(u, 0) > m->coord(v, 0);
+  }
+  Sign turn(std::size_t f, std::size_t g) const { return predicates::orient2d(m->p2(v), m->p2(far(f)), m->p2(far(g))); }
+  bool operator()(std::size_t f, std::size_t g) const {
+    const bool uf = upper(far(f)), ug = upper(far(g));
+    return uf != ug ? uf : turn(f, g) == Sign::positive;
+  }
+};
+
+bool leaves(const FacetSet& b, std::size_t f, Index v) { return b.facet(f)[0] == v; }
+
+// One vertex with more than two boundary edges: sorted counterclockwise in place, checked to
+// alternate, each entering edge united with the edge after it.
+Finding pair_at_pinch_2d(const MeshView& m, const FacetSet& b, Index v, std::size_t* first, std::size_t n, UnionFind& uf,
+                         Overlap& overlap) {
+  const CcwAround ccw{&m, &b, v};
+  std::sort(first, first + n, ccw);
+  for (std::size_t i = 0; i + 1 < n; ++i)
+    if (!ccw(first[i], first[i + 1])) {  // the same direction: the two edges overlap (judged first,
+      overlap.note(first[i], first[i + 1]);  // as the order of tied edges is arbitrary)
+      return {};
+    }
+  for (std::size_t i = 0; i < n; ++i) {
+    const std::size_t f = first[i], g = first[(i + 1) % n];
+    if (leaves(b, f, v) == leaves(b, g, v))
+      return pinch(b, g, v, "its " + std::to_string(n) + " boundary edges do not alternate between leaving and entering "
+                            "it (counterclockwise), so the elements there cover some direction twice");
+  }
+  for (std::size_t i = 0; i < n; ++i)
+    if (!leaves(b, first[i], v)) uf.unite(first[i], first[(i + 1) % n]);
+  return {};
+}
+
+// 2D: as many boundary edges enter every boundary vertex as leave it; pairs as above.
+Finding loops_2d(const MeshView& m, const FacetSet& b, UnionFind& uf, Stars& stars, Overlap& overlap) {
+  stars = stars_2d(m, b);
+  for (Index v = 0; v < m.vertex_count; ++v) {
+    std::size_t* first = stars.facets.data() + stars.start[v];
+    const std::size_t n = stars.start[v + 1] - stars.start[v];
+    const auto out = static_cast<std::size_t>(std::count_if(first, first + n, [&](std::size_t f) { return leaves(b, f, v); }));
+    if (n == 0) continue;
+    if (2 * out != n)
+      return pinch(b, first[0], v, std::to_string(out) + " boundary edge(s) leave it and " + std::to_string(n - out) + " enter it");
+    if (n == 2) {
+      uf.unite(first[0], first[1]);
+      continue;
+    }
+    if (Finding f = pair_at_pinch_2d(m, b, v, first, n, uf, overlap); f.defect != Defect::none) return f;
   }
   return {};
 }
@@ -51,8 +135,72 @@ struct DirectedEdge {
   std::uint32_t facet;
 };
 
-// 3D, edges: every boundary edge in exactly two boundary triangles, oriented oppositely.
-Finding edges_3d(const FacetSet& b, UnionFind& uf) {
+// The third vertex of boundary triangle f, off the edge (lo, hi).
+Index apex_of(const FacetSet& b, std::size_t f, Index lo, Index hi) {
+  for (int i = 0; i < 3; ++i)
+    if (b.facet(f)[i] != lo && b.facet(f)[i] != hi) return b.facet(f)[i];
+  return b.facet(f)[0];
+}
+
+// The order of the triangles around the edge a -> b, by their third vertices: c' comes after c
+// (by less than a half turn) when orient3d(a, b, c, c') < 0, i.e. c' is in front of the
+// triangle (a, b, c) (its normal side). Starting at the reference c0 (the first triangle's):
+// the half turn [0, pi) first, then [pi, 2 pi). A third vertex in the plane of a, b, c0 is at 0
+// or at pi: which one is decided by projecting onto a coordinate plane where a, b, c0 stay a
+// triangle (exact orient2d).
+struct AroundEdge {
+  const MeshView* m;
+  Index a, b, c0;
+  predicates::Point2 drop(Index v, int axis) const {
+    return {m->coord(v, axis == 0 ? 1 : 0), m->coord(v, axis == 2 ? 1 : 2)};
+  }
+  bool same_half_plane(Index c) const {
+    for (int axis = 0; axis < 3; ++axis) {
+      const Sign s0 = predicates::orient2d(drop(a, axis), drop(b, axis), drop(c0, axis));
+      if (s0 != Sign::zero) return predicates::orient2d(drop(a, axis), drop(b, axis), drop(c, axis)) == s0;
+    }
+    return true;  // unreachable: a boundary triangle of a positive tetrahedron is not flat
+  }
+  Sign turn(Index c, Index d) const { return predicates::orient3d(m->p3(a), m->p3(b), m->p3(c), m->p3(d)); }
+  int half(Index c) const {
+    const Sign s = turn(c0, c);
+    return s == Sign::negative ? 0 : s == Sign::positive ? 1 : (same_half_plane(c) ? 0 : 1);
+  }
+  bool before(Index c, Index d) const {
+    const int hc = half(c), hd = half(d);
+    return hc != hd ? hc < hd : turn(c, d) == Sign::negative;
+  }
+};
+
+// One edge in more than two boundary triangles: sorted around it, checked to alternate, and
+// each triangle that gives the edge the direction a -> b paired with the next one.
+Finding pair_around_edge(const MeshView& m, const FacetSet& b, DirectedEdge* first, std::size_t n, UnionFind& uf,
+                         Overlap& overlap) {
+  const Index lo = first[0].lo, hi = first[0].hi;
+  const AroundEdge around{&m, lo, hi, apex_of(b, first[0].facet, lo, hi)};
+  auto apex = [&](const DirectedEdge& e) { return apex_of(b, e.facet, lo, hi); };
+  std::sort(first, first + n, [&](const DirectedEdge& x, const DirectedEdge& y) { return around.before(apex(x), apex(y)); });
+  for (std::size_t i = 0; i + 1 < n; ++i)
+    if (!around.before(apex(first[i]), apex(first[i + 1]))) {  // the same half-plane: the triangles overlap
+      overlap.note(first[i].facet, first[i + 1].facet);
+      return {};
+    }
+  for (std::size_t i = 0; i < n; ++i) {
+    const DirectedEdge& e = first[i];
+    const DirectedEdge& f = first[(i + 1) % n];
+    if (e.forward == f.forward)
+      return pinch(b, f.facet, lo, "around edge (" + std::to_string(lo) + ", " + std::to_string(hi) + ") its " +
+                                       std::to_string(n) + " boundary triangles do not alternate in the direction they "
+                                       "give the edge, so the elements there cover some direction twice");
+  }
+  for (std::size_t i = 0; i < n; ++i)
+    if (first[i].forward) uf.unite(first[i].facet, first[(i + 1) % n].facet);
+  return {};
+}
+
+// 3D, edges: every boundary edge in an even number of boundary triangles, as many giving it
+// each direction; two of them oriented oppositely, more paired around the edge.
+Finding edges_3d(const MeshView& m, const FacetSet& b, UnionFind& uf, Overlap& overlap) {
   std::vector<DirectedEdge> edges;
   edges.reserve(3 * b.size());
   for (std::size_t f = 0; f < b.size(); ++f)
@@ -67,55 +215,23 @@ Finding edges_3d(const FacetSet& b, UnionFind& uf) {
     std::size_t j = i + 1;
     while (j < edges.size() && edges[j].lo == edges[i].lo && edges[j].hi == edges[i].hi) ++j;
     const std::string edge = "edge (" + std::to_string(edges[i].lo) + ", " + std::to_string(edges[i].hi) + ")";
-    if (j - i != 2) return pinch(b, edges[i].facet, edges[i].lo, edge + " is in " + std::to_string(j - i) + " boundary triangle(s)");
-    if (edges[i].forward == edges[i + 1].forward)
-      return pinch(b, edges[i].facet, edges[i].lo, edge + " is oriented the same way by both its boundary triangles");
-    uf.unite(edges[i].facet, edges[i + 1].facet);
+    const auto forward = static_cast<std::size_t>(std::count_if(edges.begin() + static_cast<std::ptrdiff_t>(i),
+                                                                edges.begin() + static_cast<std::ptrdiff_t>(j),
+                                                                [](const DirectedEdge& e) { return e.forward; }));
+    if (j - i < 2 || 2 * forward != j - i)
+      return pinch(b, edges[i].facet, edges[i].lo, edge + " is in " + std::to_string(j - i) + " boundary triangle(s), " +
+                                                       std::to_string(forward) + " of them giving it the direction " +
+                                                       std::to_string(edges[i].lo) + " -> " + std::to_string(edges[i].hi));
+    if (j - i == 2) uf.unite(edges[i].facet, edges[i + 1].facet);
+    if (j - i > 2)
+      if (Finding f = pair_around_edge(m, b, edges.data() + i, j - i, uf, overlap); f.defect != Defect::none) return f;
     i = j;
   }
   return {};
 }
 
-// 3D, vertices: the triangles around a boundary vertex form one cycle (no pinch). Each
-// triangle at v gives a link edge (the vertex after v -> the one after that); every link vertex
-// starts exactly one link edge (edges_3d), so the edges sorted by start are followed by binary
-// search: O(d log d) for a vertex in d boundary triangles.
-Finding links_3d(const MeshView& m, const FacetSet& b) {
-  std::vector<std::size_t> start(m.vertex_count + 1, 0);
-  for (Index v : b.vertices) ++start[v + 1];
-  for (std::size_t v = 0; v < m.vertex_count; ++v) start[v + 1] += start[v];
-  std::vector<std::size_t> star(b.vertices.size()), fill(start.begin(), start.end() - 1);
-  for (std::size_t i = 0; i < b.vertices.size(); ++i) star[fill[b.vertices[i]]++] = i;
-  std::vector<std::pair<Index, Index>> link;
-  for (Index v = 0; v < m.vertex_count; ++v) {
-    const std::size_t first = start[v], degree = start[v + 1] - start[v];
-    if (degree == 0) continue;
-    auto after = [&](std::size_t k, std::size_t which) {  // vertex after v (which = 1) or after that (2)
-      const std::size_t at = star[first + k];
-      return b.vertices[at - at % 3 + (at % 3 + which) % 3];
-    };
-    link.clear();
-    for (std::size_t k = 0; k < degree; ++k) link.push_back({after(k, 1), after(k, 2)});
-    std::sort(link.begin(), link.end());
-    Index current = link[0].second;
-    std::size_t steps = 1;
-    for (; current != link[0].first && steps <= degree; ++steps) {
-      const auto it = std::lower_bound(link.begin(), link.end(), std::pair<Index, Index>{current, 0});
-      if (it == link.end() || it->first != current) break;
-      current = it->second;
-    }
-    if (steps != degree) return pinch(b, star[first] / 3, v, "its boundary triangles form more than one fan");
-  }
-  return {};
-}
-
-}  // namespace
-
-Finding check_boundary_manifold(const MeshView& m, const FacetSet& b, Components& comps) {
-  UnionFind uf(b.size());
-  Finding f = m.dim == 2 ? loops_2d(m, b, uf) : edges_3d(b, uf);
-  if (f.defect == Defect::none && m.dim == 3) f = links_3d(m, b);
-  if (f.defect != Defect::none) return f;
+// The components: facets, bounding box, enclosed sign.
+void collect_components(const MeshView& m, const FacetSet& b, UnionFind& uf, Components& comps) {
   std::vector<std::size_t> id(b.size(), SIZE_MAX);  // components numbered by first facet
   for (std::size_t i = 0; i < b.size(); ++i) {
     const std::size_t root = uf.find(i), c = id[root] == SIZE_MAX ? (id[root] = comps.facets.size()) : id[root];
@@ -127,15 +243,87 @@ Finding check_boundary_manifold(const MeshView& m, const FacetSet& b, Components
   }
   comps.of_facet.assign(b.size(), 0);
   for (std::size_t c = 0; c < comps.facets.size(); ++c)
-    for (std::size_t facet : comps.facets[c]) {
-      comps.of_facet[facet] = c;
-      const Index v = b.facet(facet)[0];  // 2D: the lowest, then leftmost vertex (sweep_2d's order)
-      const Index& best = comps.vertex[c];
-      if (m.dim == 2 && (m.coord(v, 1) < m.coord(best, 1) || (m.coord(v, 1) == m.coord(best, 1) && m.coord(v, 0) < m.coord(best, 0))))
-        comps.vertex[c] = v;
-    }
+    for (std::size_t facet : comps.facets[c]) comps.of_facet[facet] = c;
   for (const auto& c : comps.facets) comps.measure_sign.push_back(enclosed_measure_sign(m, b, c));
+}
+
+// 2D: each component's lowest, then leftmost vertex v (sweep_2d's order), and the correction
+// from W just left of v to W just counterclockwise of the component's last edge at v: the
+// sweep weights (+1 downward, -1 upward, 0 horizontal) of the edges at v between them, all in
+// the upper half (proofs/mesh_certificate.md, condition 5).
+void lowest_vertices_2d(const MeshView& m, const FacetSet& b, const Stars& stars, Components& comps) {
+  auto lower = [&](Index v, Index w) {
+    return m.coord(v, 1) != m.coord(w, 1) ? m.coord(v, 1) < m.coord(w, 1) : m.coord(v, 0) < m.coord(w, 0);
+  };
+  for (std::size_t c = 0; c < comps.facets.size(); ++c)
+    for (std::size_t facet : comps.facets[c])
+      if (lower(b.facet(facet)[0], comps.vertex[c])) comps.vertex[c] = b.facet(facet)[0];
+  comps.winding_offset.assign(comps.facets.size(), 0);
+  std::vector<char> done(comps.facets.size(), 0);
+  for (std::size_t c = 0; c < comps.facets.size(); ++c) {
+    const Index v = comps.vertex[c];
+    const std::size_t first = stars.start[v], n = stars.start[v + 1] - first;
+    if (n == 2 || done[c]) continue;
+    const CcwAround ccw{&m, &b, v};
+    int sum = 0;  // over the upper half, from its last edge back towards the direction (1, 0)
+    for (std::size_t k = n; k-- > 0;) {
+      const std::size_t f = stars.facets[first + k];
+      if (!ccw.upper(ccw.far(f))) continue;
+      const std::size_t owner = comps.of_facet[f];
+      if (comps.vertex[owner] == v && !done[owner]) comps.winding_offset[owner] = sum, done[owner] = 1;
+      const double from = m.coord(b.facet(f)[0], 1), to = m.coord(b.facet(f)[1], 1);
+      sum += from > to ? 1 : (from < to ? -1 : 0);
+    }
+  }
+}
+
+// 3D: each component's vertex is one that no other component passes through, so that the
+// winding numbers of the others are defined there and equal their value along the component.
+Finding free_vertices_3d(const MeshView& m, const FacetSet& b, Components& comps) {
+  std::vector<std::size_t> owner(m.vertex_count, SIZE_MAX);
+  std::vector<char> shared(m.vertex_count, 0);
+  for (std::size_t i = 0; i < b.vertices.size(); ++i) {
+    const Index v = b.vertices[i];
+    const std::size_t c = comps.of_facet[i / 3];
+    if (owner[v] != SIZE_MAX && owner[v] != c) shared[v] = 1;
+    owner[v] = c;
+  }
+  for (std::size_t c = 0; c < comps.facets.size(); ++c) {
+    bool found = false;
+    for (std::size_t k = 0; k < comps.facets[c].size() * 3 && !found; ++k) {
+      const Index v = b.facet(comps.facets[c][k / 3])[k % 3];
+      if (!shared[v]) comps.vertex[c] = v, found = true;
+    }
+    if (!found)
+      return pinch(b, comps.facets[c][0], comps.vertex[c],
+                   "every vertex of its boundary component is also on another component; the certificate needs one vertex of "
+                   "each component off the others to compare their winding numbers (a limitation, "
+                   "proofs/mesh_certificate.md section 7)");
+  }
   return {};
+}
+
+}  // namespace
+
+Finding check_boundary_manifold(const MeshView& m, const FacetSet& b, Components& comps) {
+  UnionFind uf(b.size());
+  Overlap overlap;
+  Stars stars;
+  Finding f = m.dim == 2 ? loops_2d(m, b, uf, stars, overlap) : edges_3d(m, b, uf, overlap);
+  if (f.defect != Defect::none) return f;
+  if (overlap.a != SIZE_MAX) {
+    f = contact_of(m, b, overlap.a, overlap.b, Defect::t_junction, Defect::boundary_intersection,
+                   m.dim == 2 ? "boundary edge" : "boundary triangle");
+    if (f.defect == Defect::none)  // unreachable: two facets along one ray / half-plane meet
+      f = finding(Defect::boundary_intersection, b.owner[overlap.a], b.owner[overlap.b], -1, "two boundary facets overlap");
+    return f;
+  }
+  collect_components(m, b, uf, comps);
+  if (m.dim == 2) {
+    lowest_vertices_2d(m, b, stars, comps);
+    return {};
+  }
+  return free_vertices_3d(m, b, comps);
 }
 
 }  // namespace certimesh::certificate::detail

@@ -2,6 +2,8 @@
 // defect, so a mesh broken in exactly one way is reported with exactly that reason.
 #include "certimesh/certificate/check_mesh.h"
 
+#include <cmath>
+
 #include "certimesh/predicates/non_finite_input.h"
 #include "stages.h"
 
@@ -14,6 +16,19 @@ detail::MeshView view_of(const io::MeshData& mesh) {
   const auto& cells = dim == 2 ? mesh.triangles : mesh.tetrahedra;
   return {dim, mesh.coordinates.data(), mesh.coordinates.size() / static_cast<std::size_t>(dim), cells.data(),
           cells.size() / static_cast<std::size_t>(dim + 1)};
+}
+
+// The domain's hole points for the 2D single-cover sweep to answer for at the same time; none
+// when one is not finite (the domain check refuses that, by name).
+std::vector<std::array<double, 2>> hole_points_2d(const detail::MeshView& m, const io::MeshData* domain) {
+  std::vector<std::array<double, 2>> at;
+  if (m.dim != 2 || domain == nullptr || domain->dimension != 2) return at;
+  for (std::size_t h = 0; h < domain->hole_count(); ++h) {
+    const double x = domain->holes[2 * h], y = domain->holes[2 * h + 1];
+    if (!std::isfinite(x) || !std::isfinite(y)) return {};
+    at.push_back({x, y});
+  }
+  return at;
 }
 
 Finding run_stages(const detail::MeshView& m, const io::MeshData* domain, const CheckOptions& options, Statistics& stats) {
@@ -32,7 +47,7 @@ Finding run_stages(const detail::MeshView& m, const io::MeshData* domain, const 
   if (f.defect != Defect::none) return f;
   f = detail::check_boundary_embedding(m, boundary);
   if (f.defect != Defect::none) return f;
-  f = detail::check_single_cover(m, boundary, comps);
+  f = detail::check_single_cover(m, boundary, comps, hole_points_2d(m, domain));
   if (f.defect != Defect::none || domain == nullptr) return f;
   return detail::check_domain(m, boundary, comps, lex_order, *domain, options.boundary_tolerance, stats);
 }

@@ -19,6 +19,9 @@ class BoxGrid {
   /// Calls visit(i, j), i < j, for every pair of overlapping boxes until it returns true.
   template <class Visit>
   bool any_pair(Visit visit) const;
+  /// Calls visit(i) once for every box i overlapping `query` (a box not in the grid).
+  template <class Visit>
+  void each_overlapping(const Box& query, Visit visit) const;
 
  private:
   int cell(double x, int axis) const {
@@ -52,6 +55,26 @@ bool BoxGrid::any_pair(Visit visit) const {
       }
   }
   return false;
+}
+
+template <class Visit>
+void BoxGrid::each_overlapping(const Box& query, Visit visit) const {
+  int fq[3], lq[3], c[3];
+  range(query, fq, lq);
+  for (c[2] = fq[2]; c[2] <= lq[2]; ++c[2])
+    for (c[1] = fq[1]; c[1] <= lq[1]; ++c[1])
+      for (c[0] = fq[0]; c[0] <= lq[0]; ++c[0]) {
+        const std::size_t here = index(c);
+        auto it = std::lower_bound(entries_.begin(), entries_.end(), std::pair<std::size_t, std::size_t>{here, 0});
+        for (; it != entries_.end() && it->first == here; ++it) {
+          const std::size_t i = it->second;
+          if (!boxes_overlap(boxes_[i], query, dim_)) continue;
+          int fi[3], li[3], common[3] = {0, 0, 0};
+          range(boxes_[i], fi, li);
+          for (int k = 0; k < dim_; ++k) common[k] = std::max(fi[k], fq[k]);
+          if (index(common) == here) visit(i);  // the first cell both cover: once per box
+        }
+      }
 }
 
 }  // namespace certimesh::certificate::detail

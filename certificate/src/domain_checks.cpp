@@ -31,10 +31,12 @@ struct Domain {
   MeshView geo;     // coordinates only
   FacetSet facets;  // segments (2D) or triangles (3D), domain vertex ids
   BoundaryTolerance tolerance;
-  // 3D: every edge used once in each direction by its two triangles. Then the solid is where
+  // 3D: every edge used as often in each direction by its triangles. Then the solid is where
   // the winding number of the shells is non-zero (design decision 8): an inner shell oriented
   // inward bounds a cavity without a hole point.
   bool oriented = false;
+  std::vector<char> pinned;  // per mesh vertex: it is a domain vertex (domain_vertices_in_mesh)
+  std::vector<std::int64_t> mesh_vertex_at;  // per domain vertex: the mesh vertex there, or -1
   // 2D (domain_faces.h): the segments with a domain face on a side; the others (eaten by a
   // hole, or outside) need no coverage.
   std::vector<char> needs_cover;
@@ -56,6 +58,18 @@ Finding invalid(const std::string& why, std::int64_t facet = -1) {
   return finding(Defect::invalid_domain, -1, facet, -1, "the domain " + why);
 }
 
+// A segment with equal ends, or a triangle with collinear corners (collinear in every
+// coordinate plane), exactly.
+bool degenerate(const MeshView& g, const Index* x) {
+  if (g.dim == 2) return g.coord(x[0], 0) == g.coord(x[1], 0) && g.coord(x[0], 1) == g.coord(x[1], 1);
+  for (int k = 0; k < 3; ++k) {
+    const int i = k == 0 ? 1 : 0, j = k == 2 ? 1 : 2;  // the plane without axis k
+    auto in_plane = [&](Index v) { return predicates::Point2{g.coord(v, i), g.coord(v, j)}; };
+    if (predicates::orient2d(in_plane(x[0]), in_plane(x[1]), in_plane(x[2])) != predicates::Sign::zero) return false;
+  }
+  return true;
+}
+
 Finding load_domain(const io::MeshData& data, int dim, Domain& d) {
   if (data.dimension != dim) return invalid("has dimension " + std::to_string(data.dimension) + ", the mesh " + std::to_string(dim));
   d.geo = MeshView{dim, data.coordinates.data(), data.point_count(), nullptr, 0};
@@ -68,11 +82,11 @@ Finding load_domain(const io::MeshData& data, int dim, Domain& d) {
   for (std::size_t f = 0; f < d.facets.size(); ++f) {
     const Index* x = d.facets.facet(f);
     for (int i = 0; i < dim; ++i) if (x[i] >= d.geo.vertex_count) return invalid("facet " + std::to_string(f) + " names a missing vertex", static_cast<std::int64_t>(f));
-    const std::vector<Vec> p = facet_points(d, f);
-    const bool flat = dim == 2 ? p[0] == p[1] : cross(minus(p[1], p[0]), minus(p[2], p[0])) == Vec{0, 0, 0};
-    if (flat) return invalid("facet " + std::to_string(f) + " is degenerate", static_cast<std::int64_t>(f));
+    if (degenerate(d.geo, x)) return invalid("facet " + std::to_string(f) + " is degenerate", static_cast<std::int64_t>(f));
   }
-  std::vector<std::pair<Edge, bool>> edges;  // 3D: a closed surface, every edge in exactly two triangles
+  // 3D: closed shells, every edge in an even number of triangles (two; more where shells touch
+  // along an edge: design decision 8); oriented when every edge is used as often each way.
+  std::vector<std::pair<Edge, bool>> edges;
   for (std::size_t f = 0; dim == 3 && f < d.facets.size(); ++f)
     for (int i = 0; i < 3; ++i) {
       const Index u = d.facets.facet(f)[i], w = d.facets.facet(f)[(i + 1) % 3];
@@ -82,8 +96,9 @@ Finding load_domain(const io::MeshData& data, int dim, Domain& d) {
   d.oriented = dim == 3;
   for (std::size_t i = 0, j = 0; i < edges.size(); i = j) {
     while (j < edges.size() && edges[j].first == edges[i].first) ++j;
-    if (j - i != 2) return invalid("is not a closed surface: edge (" + std::to_string(edges[i].first.first) + ", " + std::to_string(edges[i].first.second) + ") is in " + std::to_string(j - i) + " triangle(s)");
-    d.oriented = d.oriented && edges[i].second != edges[i + 1].second;
+    if ((j - i) % 2 != 0) return invalid("is not a closed surface: edge (" + std::to_string(edges[i].first.first) + ", " + std::to_string(edges[i].first.second) + ") is in " + std::to_string(j - i) + " triangle(s)");
+    const auto forward = std::count_if(edges.begin() + static_cast<std::ptrdiff_t>(i), edges.begin() + static_cast<std::ptrdiff_t>(j), [](const auto& e) { return e.second; });
+    d.oriented = d.oriented && 2 * static_cast<std::size_t>(forward) == j - i;
   }
   Finding c = first_contact(d.geo, d.facets, Defect::invalid_domain, Defect::invalid_domain, "domain facet");
   if (c.defect != Defect::none) c.message = "the domain is not simple: " + c.message;
@@ -97,46 +112,84 @@ struct OnFacet {
   friend bool operator<(const OnFacet& a, const OnFacet& b) { return a.vertex != b.vertex ? a.vertex < b.vertex : a.facet < b.facet; }
 };
 
-// Which mesh vertices are domain vertices (identical coordinates). Such a vertex is an exact
-// input point: it lies on a domain facet only exactly (and then, the domain being valid, at one
-// of the facet's own vertices), never through its rounding box -- otherwise rounding slack
-// would let the mesh boundary hop from one domain component onto another (issue 12).
-std::vector<char> domain_vertices_in_mesh(const MeshView& m, const Domain& d) {
-  std::vector<Index> order(d.geo.vertex_count);
+// Which mesh vertices are domain vertices (identical coordinates): of each mesh vertex, the
+// range of `order` (the domain vertices sorted by coordinates) at its point, empty if none.
+// Such a vertex is an exact input point: it lies on a domain facet only exactly (and then, the
+// domain being valid, at one of the facet's own vertices), never through its rounding box --
+// otherwise rounding slack would let the mesh boundary hop from one domain component onto
+// another (issue 12).
+struct DomainVertexMatch {
+  std::vector<Index> order;
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> range;  // per mesh vertex, into `order`
+};
+DomainVertexMatch domain_vertices_in_mesh(const MeshView& m, const Domain& d) {
+  DomainVertexMatch match;
+  std::vector<Index>& order = match.order;
+  order.resize(d.geo.vertex_count);
   std::iota(order.begin(), order.end(), Index{0});
   auto at = [](const MeshView& g, Index v) { return g.xyz + static_cast<std::size_t>(v) * g.dim; };
   auto less = [&](const double* a, const double* b) { return std::lexicographical_compare(a, a + m.dim, b, b + m.dim); };
   std::sort(order.begin(), order.end(), [&](Index a, Index b) { return less(at(d.geo, a), at(d.geo, b)); });
-  std::vector<char> pinned(m.vertex_count, 0);
+  match.range.resize(m.vertex_count);
   for (Index v = 0; v < m.vertex_count; ++v) {
     const double* p = at(m, v);
-    const auto it = std::lower_bound(order.begin(), order.end(), p, [&](Index u, const double* q) { return less(at(d.geo, u), q); });
-    pinned[v] = it != order.end() && std::equal(p, p + m.dim, at(d.geo, *it));
+    auto it = std::lower_bound(order.begin(), order.end(), p, [&](Index u, const double* q) { return less(at(d.geo, u), q); });
+    const auto first = static_cast<std::uint32_t>(it - order.begin());
+    while (it != order.end() && std::equal(p, p + m.dim, at(d.geo, *it))) ++it;
+    match.range[v] = {first, static_cast<std::uint32_t>(it - order.begin())};
   }
-  return pinned;
+  return match;
+}
+
+// The domain facets at each domain vertex (counting sort): `facet[offset[u] .. offset[u + 1])`.
+struct FacetsAtVertex {
+  std::vector<std::size_t> offset;
+  std::vector<std::uint32_t> facet;
+};
+FacetsAtVertex facets_at_vertices(const Domain& d) {
+  FacetsAtVertex at;
+  const int k = d.geo.dim;  // corners per facet
+  at.offset.assign(d.geo.vertex_count + 1, 0);
+  for (std::size_t f = 0; f < d.facets.size(); ++f)
+    for (int i = 0; i < k; ++i) ++at.offset[d.facets.facet(f)[i] + 1];
+  for (std::size_t u = 0; u < d.geo.vertex_count; ++u) at.offset[u + 1] += at.offset[u];
+  at.facet.resize(at.offset.back());
+  std::vector<std::size_t> fill(at.offset.begin(), at.offset.end() - 1);
+  for (std::size_t f = 0; f < d.facets.size(); ++f)
+    for (int i = 0; i < k; ++i) at.facet[fill[d.facets.facet(f)[i]]++] = static_cast<std::uint32_t>(f);
+  return at;
 }
 
 // Every (mesh vertex, domain facet) incidence by the rounding-box rule (exact only, for a mesh
-// vertex that is a domain vertex). A point outside a facet's double bounding box has its
-// rounding box outside too: the grid's box test loses nothing.
-std::vector<OnFacet> incidences(const MeshView& m, const Domain& d) {
-  std::vector<Box> boxes;
-  for (std::size_t f = 0; f < d.facets.size(); ++f) boxes.push_back(facet_box(d.geo, d.facets.facet(f), d.geo.dim));
-  for (Index v = 0; v < m.vertex_count; ++v) boxes.push_back(accepted_bounds(m.xyz + static_cast<std::size_t>(v) * m.dim, m.dim, d.tolerance));
-  const std::vector<char> pinned = domain_vertices_in_mesh(m, d);
+// vertex that is a domain vertex). A mesh vertex at a domain vertex with facets is on exactly
+// those facets: the domain passed its first-contact test, so its vertices lie on no other
+// facet. Every other mesh vertex looks for the facets whose double bounding box meets its
+// accepted box: a point outside a facet's bounding box has its rounding box outside too.
+std::vector<OnFacet> incidences(const MeshView& m, const Domain& d, const DomainVertexMatch& match) {
+  const FacetsAtVertex at = facets_at_vertices(d);
   std::vector<OnFacet> out;
-  const std::size_t facets = d.facets.size();
-  BoxGrid(boxes, m.dim).any_pair([&](std::size_t i, std::size_t j) {
-    if (i >= facets || j < facets) return false;
-    const auto v = static_cast<Index>(j - facets);
-    const double* p = m.xyz + static_cast<std::size_t>(v) * m.dim;
-    const auto s = corners(d.geo, d.facets.facet(i), m.dim);
-    const bool exact = lies_exactly_on(s, m.dim, p);  // then its box meets it
-    if (exact || (!pinned[v] && lies_on(s, m.dim, p, d.tolerance)))
-      out.push_back({v, static_cast<std::uint32_t>(i), exact});
-    return false;
-  });
+  std::vector<Index> unmatched;  // vertices the grid must answer for
+  for (Index v = 0; v < m.vertex_count; ++v) {
+    const std::size_t before = out.size();
+    for (std::uint32_t i = match.range[v].first; i < match.range[v].second; ++i)
+      for (std::size_t k = at.offset[match.order[i]]; k < at.offset[match.order[i] + 1]; ++k) out.push_back({v, at.facet[k], true});
+    if (out.size() == before) unmatched.push_back(v);
+  }
+  if (!unmatched.empty()) {
+    std::vector<Box> boxes;
+    for (std::size_t f = 0; f < d.facets.size(); ++f) boxes.push_back(facet_box(d.geo, d.facets.facet(f), d.geo.dim));
+    const BoxGrid grid(boxes, m.dim);
+    for (Index v : unmatched) {
+      const double* p = m.xyz + static_cast<std::size_t>(v) * m.dim;
+      grid.each_overlapping(accepted_bounds(p, m.dim, d.tolerance), [&](std::size_t f) {
+        const auto s = corners(d.geo, d.facets.facet(f), m.dim);
+        const bool exact = lies_exactly_on(s, m.dim, p);  // then its box meets it
+        if (exact || (!d.pinned[v] && lies_on(s, m.dim, p, d.tolerance))) out.push_back({v, static_cast<std::uint32_t>(f), exact});
+      });
+    }
+  }
   std::sort(out.begin(), out.end());
+  out.erase(std::unique(out.begin(), out.end(), [](const OnFacet& x, const OnFacet& y) { return x.vertex == y.vertex && x.facet == y.facet; }), out.end());
   return out;
 }
 
@@ -185,13 +238,20 @@ Finding vertex_off(const MeshView& m, Index v, const Domain& d) {
 
 // Incidences of every mesh vertex, and the first domain facet all of `count` vertices are on.
 struct OnDomain {
-  std::vector<OnFacet> on;
-  auto range(Index v) const {
-    return std::equal_range(on.begin(), on.end(), OnFacet{v, 0, false}, [](const OnFacet& x, const OnFacet& y) { return x.vertex < y.vertex; });
+  OnDomain(std::vector<OnFacet> incidences, std::size_t vertex_count) : on(std::move(incidences)), first(vertex_count + 1, 0) {
+    for (const OnFacet& o : on) ++first[o.vertex + 1];
+    for (std::size_t v = 0; v < vertex_count; ++v) first[v + 1] += first[v];
+  }
+  std::vector<OnFacet> on;         // sorted by vertex, then facet
+  std::vector<std::size_t> first;  // of vertex v: on[first[v] .. first[v + 1])
+  std::pair<const OnFacet*, const OnFacet*> range(Index v) const { return {on.data() + first[v], on.data() + first[v + 1]}; }
+  bool has(Index v, std::uint32_t facet) const {
+    const auto r = range(v);
+    return std::binary_search(r.first, r.second, OnFacet{v, facet, false});
   }
   std::uint32_t common(const Index* x, int count) const {
     for (auto it = range(x[0]).first; it != range(x[0]).second; ++it)
-      if (std::all_of(x + 1, x + count, [&](Index v) { auto r = range(v); return std::binary_search(r.first, r.second, OnFacet{v, it->facet, false}); }))
+      if (std::all_of(x + 1, x + count, [&](Index v) { return has(v, it->facet); }))
         return it->facet;
     return UINT32_MAX;
   }
@@ -219,15 +279,39 @@ Finding boundary_on_domain(const MeshView& m, const FacetSet& b, const Domain& d
   return {};
 }
 
-// Mesh edges both ways, sorted (interior edges included: they cover internal constraints).
-std::vector<Edge> mesh_edges(const MeshView& m, const std::vector<char>& near) {
-  std::vector<Edge> e;
-  for (std::size_t c = 0; c < m.element_count; ++c)
-    for (int i = 0; i < m.corners(); ++i)
-      for (int j = 0; j < m.corners(); ++j)
-        if (i != j && near[m.cell(c)[i]] && near[m.cell(c)[j]]) e.push_back({m.cell(c)[i], m.cell(c)[j]});
-  std::sort(e.begin(), e.end());
-  e.erase(std::unique(e.begin(), e.end()), e.end());
+// The mesh edges between vertices on the domain boundary, as each such vertex's neighbours
+// (interior edges included: they cover internal constraints). A counting sort by first vertex,
+// so the cost is linear in the elements whatever their order.
+struct NearEdges {
+  std::vector<std::size_t> offset;  // neighbours of v: around[offset[v] .. offset[v + 1])
+  std::vector<Index> around;
+  const Index* begin(Index v) const { return around.data() + offset[v]; }
+  const Index* end(Index v) const { return around.data() + offset[v + 1]; }
+};
+NearEdges mesh_edges(const MeshView& m, const std::vector<char>& near) {
+  NearEdges e;
+  e.offset.assign(m.vertex_count + 1, 0);
+  auto each_pair = [&](auto&& use) {
+    for (std::size_t c = 0; c < m.element_count; ++c)
+      for (int i = 0; i < m.corners(); ++i)
+        for (int j = 0; j < m.corners(); ++j)
+          if (i != j && near[m.cell(c)[i]] && near[m.cell(c)[j]]) use(m.cell(c)[i], m.cell(c)[j]);
+  };
+  each_pair([&](Index u, Index) { ++e.offset[u + 1]; });
+  for (std::size_t v = 0; v < m.vertex_count; ++v) e.offset[v + 1] += e.offset[v];
+  e.around.resize(e.offset.back());
+  std::vector<std::size_t> fill(e.offset.begin(), e.offset.end() - 1);
+  each_pair([&](Index u, Index w) { e.around[fill[u]++] = w; });
+  std::size_t out = 0;  // each neighbour once, in order, compacted in place
+  for (std::size_t v = 0; v < m.vertex_count; ++v) {
+    Index* first = e.around.data() + e.offset[v];
+    Index* last = e.around.data() + e.offset[v + 1];
+    std::sort(first, last);
+    e.offset[v] = out;
+    for (Index *w = first, *kept = std::unique(first, last); w != kept; ++w) e.around[out++] = *w;
+  }
+  e.offset[m.vertex_count] = out;
+  e.around.resize(out);
   return e;
 }
 
@@ -240,12 +324,13 @@ std::int64_t find_vertex(const MeshView& m, const std::vector<Index>& lex, const
 }
 
 // From the mesh vertex at domain point a to the one at b along mesh edges whose ends are on
-// segment ab (rounding-box rule), greedily towards b: success shows ab covered by mesh edges.
-// `path` receives the mesh vertices from a to b; `seen` (one stamp per vertex, `stamp` this
-// walk's) keeps each vertex once without a search.
-bool walk(const MeshView& m, const std::vector<Edge>& edges, const std::vector<Index>& lex, const BoundaryTolerance& tolerance,
-          const double* a, const double* b, std::vector<Index>& path, std::vector<std::uint32_t>& seen, std::uint32_t stamp) {
-  const std::int64_t start = find_vertex(m, lex, a), target = find_vertex(m, lex, b);
+// segment ab (`on_ab`: the incidence rule of the domain facet, and in 3D the edge's own rounding-
+// box rule), greedily towards b: success shows ab covered by mesh edges. `path` receives the mesh
+// vertices from a to b; `seen` (one stamp per vertex, `stamp` this walk's) keeps each vertex once
+// without a search.
+template <class OnSegment>
+bool walk(const MeshView& m, const NearEdges& edges, std::int64_t start, std::int64_t target, const double* b,
+          const OnSegment& on_ab, std::vector<Index>& path, std::vector<std::uint32_t>& seen, std::uint32_t stamp) {
   path.clear();
   if (start < 0 || target < 0) return false;
   path.push_back(static_cast<Index>(start));
@@ -253,14 +338,11 @@ bool walk(const MeshView& m, const std::vector<Edge>& edges, const std::vector<I
   for (Index u = path[0]; u != target;) {
     std::int64_t best = -1;
     double best_distance = std::numeric_limits<double>::infinity();
-    const auto r = std::equal_range(edges.begin(), edges.end(), Edge{u, 0}, [](const Edge& x, const Edge& y) { return x.first < y.first; });
-    for (auto it = r.first; it != r.second; ++it) {
-      const double* p = m.xyz + static_cast<std::size_t>(it->second) * m.dim;
+    for (const Index* w = edges.begin(u); w != edges.end(u); ++w) {
+      const double* p = m.xyz + static_cast<std::size_t>(*w) * m.dim;
       double dist = 0;  // max-norm: squares would overflow for huge coordinates
       for (int k = 0; k < m.dim; ++k) dist = std::max(dist, std::abs(p[k] - b[k]));
-      if ((best < 0 || dist < best_distance) && seen[it->second] != stamp &&
-          lies_on({a, b, nullptr}, m.dim, p, tolerance))
-        best = it->second, best_distance = dist;
+      if ((best < 0 || dist < best_distance) && seen[*w] != stamp && on_ab(*w)) best = *w, best_distance = dist;
     }
     if (best < 0) return false;
     path.push_back(u = static_cast<Index>(best));
@@ -366,11 +448,11 @@ Finding interfaces_inside_solid(const MeshView& m, const Domain& d, const std::v
 // the mesh facets on it, whose mod-2 boundary must be exactly those chains: a 2-chain with
 // that boundary covers the face an odd number of times, and non-overlapping facets cover once.
 // In 2D the chains then go to check_segment_chains (how each segment is covered).
-Finding coverage(const MeshView& m, const FacetSet& b, const Domain& d, const std::vector<Index>& lex, const OnDomain& on,
+Finding coverage(const MeshView& m, const FacetSet& b, const Domain& d, const OnDomain& on,
                  Statistics& stats) {
   std::vector<char> near(m.vertex_count, 0);  // on the domain boundary: only these matter below
   for (const OnFacet& o : on.on) near[o.vertex] = 1;
-  const std::vector<Edge> edges = mesh_edges(m, near);
+  const NearEdges edges = mesh_edges(m, near);
   std::vector<std::pair<std::uint32_t, std::array<Index, 3>>> on_face;  // (domain facet, mesh facet), once each
   std::vector<TriangleOnFace> sides;  // and the side of the domain facet its element(s) lie on
   for (std::size_t e = 0; m.dim == 3 && e < m.element_count; ++e)
@@ -399,11 +481,17 @@ Finding coverage(const MeshView& m, const FacetSet& b, const Domain& d, const st
     std::vector<Index> path;
     bool complete = true;
     for (int i = 0; i < (m.dim == 2 ? 1 : 3) && complete; ++i) {
-      const bool covered = walk(m, edges, lex, d.tolerance, d.geo.xyz + static_cast<std::size_t>(x[i]) * m.dim,
-                                d.geo.xyz + static_cast<std::size_t>(x[(i + 1) % m.dim]) * m.dim, path, seen, ++stamp);
-      complete = covered;
-      if (!covered && optional) break;
-      if (!covered)
+      const double* a = d.geo.xyz + static_cast<std::size_t>(x[i]) * m.dim;
+      const double* z = d.geo.xyz + static_cast<std::size_t>(x[(i + 1) % m.dim]) * m.dim;
+      auto on_az = [&](Index w) {  // 2D: the segment's incidence; 3D: also on the triangle's edge az
+        if (!on.has(w, static_cast<std::uint32_t>(f))) return false;
+        if (m.dim == 2) return true;
+        const double* p = m.xyz + static_cast<std::size_t>(w) * m.dim;
+        return lies_exactly_on({a, z, nullptr}, m.dim, p) || (!d.pinned[w] && lies_on({a, z, nullptr}, m.dim, p, d.tolerance));
+      };
+      complete = walk(m, edges, d.mesh_vertex_at[x[i]], d.mesh_vertex_at[x[(i + 1) % m.dim]], z, on_az, path, seen, ++stamp);
+      if (!complete && optional) break;
+      if (!complete)
         return finding(Defect::domain_boundary_not_covered, -1, static_cast<std::int64_t>(f), -1,
                        "domain facet " + std::to_string(f) + ": its edge from domain vertex " + std::to_string(x[i]) + " to " +
                            std::to_string(x[(i + 1) % m.dim]) + " is not covered by mesh edges on it");
@@ -453,9 +541,10 @@ Finding holes_and_regions_2d(const MeshView& m, const FacetSet& b, const Compone
                              const io::MeshData& data) {
   std::vector<std::array<double, 2>> at(data.hole_count());
   for (std::size_t h = 0; h < at.size(); ++h) at[h] = {data.holes[2 * h], data.holes[2 * h + 1]};
-  std::vector<SweepAnswer> answers;
-  if (Finding f = sweep_2d(m, b, Defect::t_junction, Defect::boundary_intersection, "boundary edge", at, answers); f.defect != Defect::none)
-    return f;
+  std::vector<SweepAnswer> answers = comps.hole_answers;  // check_single_cover's sweep, when it had them
+  if (answers.size() != at.size())
+    if (Finding f = sweep_2d(m, b, Defect::t_junction, Defect::boundary_intersection, "boundary edge", at, answers); f.defect != Defect::none)
+      return f;
   std::vector<char> has_hole(comps.facets.size(), 0);
   for (std::size_t h = 0; h < at.size(); ++h) {
     if (answers[h].on_facet || answers[h].winding != 0 || find_vertex(m, lex, at[h].data()) >= 0) return hole_covered(h);
@@ -536,9 +625,16 @@ Finding check_domain(const MeshView& m, const FacetSet& boundary, const Componen
   Finding f = load_domain(domain, m.dim, d);
   if (f.defect == Defect::none && m.dim == 2) f = faces_and_isolated_vertices(m, lex_order, domain, d);
   if (f.defect != Defect::none) return f;
-  const OnDomain on{incidences(m, d)};
+  const DomainVertexMatch match = domain_vertices_in_mesh(m, d);
+  d.pinned.resize(m.vertex_count);
+  d.mesh_vertex_at.assign(d.geo.vertex_count, -1);
+  for (Index v = 0; v < m.vertex_count; ++v) {
+    d.pinned[v] = match.range[v].first != match.range[v].second;
+    for (std::uint32_t i = match.range[v].first; i < match.range[v].second; ++i) d.mesh_vertex_at[match.order[i]] = v;
+  }
+  const OnDomain on(incidences(m, d, match), m.vertex_count);
   f = boundary_on_domain(m, boundary, d, on, stats);
-  if (f.defect == Defect::none) f = coverage(m, boundary, d, lex_order, on, stats);
+  if (f.defect == Defect::none) f = coverage(m, boundary, d, on, stats);
   if (f.defect == Defect::none)
     f = m.dim == 2 ? holes_and_regions_2d(m, boundary, comps, lex_order, domain) : holes_and_regions_3d(m, boundary, comps, d, on, domain);
   return f;

@@ -53,14 +53,15 @@ bool lies_exactly_on(const std::array<const double*, 3>& s, int dim, const doubl
 
 namespace {
 
-// A cheap exact proof that p's rounding box misses the segment (2D) / triangle `s`: the box of
-// p's neighbouring doubles (it contains the rounding box) lies strictly on one side of the
-// facet's line / plane, or, in the plane, strictly outside one edge. Otherwise: rationals.
-bool box_certainly_misses(const std::array<const double*, 3>& s, int dim, const double* p) {
+// A cheap exact proof that p's accepted box misses the segment (2D) / triangle `s`: `outer`, a
+// double box containing it (the box of p's neighbouring doubles, or accepted_bounds under a
+// tolerance), lies strictly on one side of the facet's line / plane, or, in the plane, strictly
+// outside one edge. Otherwise: rationals.
+bool box_certainly_misses(const std::array<const double*, 3>& s, int dim, const Box& outer) {
   using namespace predicates;
   std::array<std::array<double, 3>, 2> box{};  // lo, hi
   for (int k = 0; k < dim; ++k) {
-    box[0][k] = std::nextafter(p[k], -HUGE_VAL), box[1][k] = std::nextafter(p[k], HUGE_VAL);
+    box[0][k] = outer.lo[k], box[1][k] = outer.hi[k];
     if (!std::isfinite(box[0][k]) || !std::isfinite(box[1][k]) || (dim == 3 && s[2] == nullptr)) return false;
   }
   auto all_corners = [&](int kx, int ky, int kz, Sign want, auto&& sign_at) {  // kz < 0: a 2D box
@@ -132,7 +133,9 @@ bool meets_box(const std::vector<Vec>& pts, int dim, const double* p, const Boun
 
 bool lies_on(const std::array<const double*, 3>& s, int dim, const double* p, const BoundaryTolerance& tol) {
   if (lies_exactly_on(s, dim, p)) return true;
-  if (!tol.active() && box_certainly_misses(s, dim, p)) return false;
+  Box outer;
+  for (int k = 0; k < dim; ++k) outer.lo[k] = std::nextafter(p[k], -HUGE_VAL), outer.hi[k] = std::nextafter(p[k], HUGE_VAL);
+  if (box_certainly_misses(s, dim, tol.active() ? accepted_bounds(p, dim, tol) : outer)) return false;
   std::vector<Vec> pts;
   for (const double* x : s)
     if (x != nullptr) pts.push_back(point_of(x, dim));

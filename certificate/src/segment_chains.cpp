@@ -14,6 +14,7 @@
 #include <cmath>
 
 #include "certimesh/predicates/orient2d.h"
+#include "exact_sum.h"
 #include "rational.h"
 #include "stages.h"
 
@@ -39,12 +40,12 @@ int direction(const std::vector<FacetKey>& keys, const FacetSet& b, Index u, Ind
 // line of the segment, |(q-p).u| (|u x (p-a)| + |u x (q-a)|) / (2|u|^2), u = b - a.
 struct Between { Q area = 0, bound = 0; };
 void add_between(const MeshView& m, const std::vector<Index>& chain, int dir, Between& out) {
+  bool all_on_line = true;
+  for (std::size_t i = 1; i + 1 < chain.size() && all_on_line; ++i)
+    all_on_line = predicates::orient2d(m.p2(chain.front()), m.p2(chain.back()), m.p2(chain[i])) == predicates::Sign::zero;
+  if (all_on_line) return;  // a degenerate polygon: area and bound are zero
   const Vec a = point_of(m, chain.front()), u = minus(point_of(m, chain.back()), a);
   const Q uu = dot(u, u);
-  bool all_on_line = true;
-  for (Index v : chain)
-    all_on_line = all_on_line && predicates::orient2d(m.p2(chain.front()), m.p2(chain.back()), m.p2(v)) == predicates::Sign::zero;
-  if (all_on_line) return;  // a degenerate polygon: area and bound are zero
   Q area = 0;
   for (std::size_t i = 0; i + 1 < chain.size(); ++i) {
     const Vec p = minus(point_of(m, chain[i]), a), q = minus(point_of(m, chain[i + 1]), a);
@@ -64,7 +65,7 @@ Finding check_segment_chains(const MeshView& m, const FacetSet& b, const std::ve
   std::sort(keys.begin(), keys.end());
   std::vector<std::uint32_t> chain_of(b.size(), UINT32_MAX);
   Between between;
-  Q domain_area = 0;
+  ExactProductSum twice_domain_area;  // the shoelace sum over the segments the mesh bounds
   for (const SegmentChain& c : chains) {
     const auto& p = c.path;
     int dir = 2;  // not yet known
@@ -85,7 +86,8 @@ Finding check_segment_chains(const MeshView& m, const FacetSet& b, const std::ve
       chain_of[f] = static_cast<std::uint32_t>(c.segment);
     }
     if (dir == 0) continue;
-    domain_area += dir * cross2(point_of(m, p.front()), point_of(m, p.back())) / 2;
+    twice_domain_area.add(m.coord(p.front(), 0), m.coord(p.back(), 1), dir);
+    twice_domain_area.add(m.coord(p.front(), 1), m.coord(p.back(), 0), -dir);
     add_between(m, p, dir, between);
   }
   for (std::size_t f = 0; f < b.size(); ++f)
@@ -93,6 +95,7 @@ Finding check_segment_chains(const MeshView& m, const FacetSet& b, const std::ve
       return finding(Defect::facet_off_domain_boundary, b.owner[f], -1, b.facet(f)[0],
                      "boundary facet " + std::to_string(f) + " of element " + std::to_string(b.owner[f]) +
                          " is on no domain segment's chain of mesh edges: the mesh boundary leaves the domain boundary there");
+  const Q domain_area = twice_domain_area.value() / 2;
   stats.domain_measure = domain_area.get_d();
   stats.measure = Q(domain_area + between.area).get_d();
   stats.measure_difference = between.area.get_d();

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "mesh_view.h"
+#include "sweep_2d.h"
 
 namespace certimesh::certificate::detail {
 
@@ -28,14 +29,21 @@ struct Components {
   std::vector<Box> box;
   std::vector<int> measure_sign;  // +1 outer, -1 cavity
   std::vector<std::vector<std::size_t>> enclosed_by;  // 3D: components with winding != 0 at vertex
-  // 2D (filled by check_single_cover's sweep): `vertex` is the lowest, then leftmost vertex;
-  // of each facet its component; of each outer component (an island of the mesh), the cavity
-  // component that bounds the unmeshed face around it (-1: the unbounded face).
+  // Of each facet its component. 2D: `vertex` is the lowest, then leftmost vertex v, and
+  // `winding_offset` what to add to W just left of v to get W just counterclockwise of the
+  // component's last edge at v (non-zero only at a pinch: other components' edges between);
+  // filled by check_single_cover's sweep: of each outer component (an island of the mesh), the
+  // cavity component that bounds the unmeshed face around it (-1: the unbounded face). 3D:
+  // `vertex` is on no other component.
   std::vector<std::size_t> of_facet;
+  std::vector<int> winding_offset;
   std::vector<std::int64_t> around;
+  // 2D: the same sweep's answers for the domain's hole points, when check_single_cover got them.
+  std::vector<SweepAnswer> hole_answers;
 };
 
-/// Condition 4, first half (non_manifold_boundary), and the components.
+/// Condition 4, first half (non_manifold_boundary; two facets leaving a pinch in one direction
+/// are reported as their contact), and the components.
 Finding check_boundary_manifold(const MeshView& m, const FacetSet& boundary, Components& comps);
 
 /// Condition 4, second half (t_junction, boundary_intersection), exact.
@@ -51,7 +59,10 @@ Finding contact_of(const MeshView& m, const FacetSet& set, std::size_t i, std::s
                    const std::string& what);
 
 /// Condition 5 (multiple_cover): winding numbers of the components at each other's vertices.
-Finding check_single_cover(const MeshView& m, const FacetSet& boundary, Components& comps);
+/// In 2D the sweep that finds them also answers for `hole_points` (the domain's, or none), into
+/// comps.hole_answers, so condition 6 needs no second sweep.
+Finding check_single_cover(const MeshView& m, const FacetSet& boundary, Components& comps,
+                           const std::vector<std::array<double, 2>>& hole_points = {});
 
 /// Exact winding number of component `c` around point `p` (off it); the sign of the area /
 /// volume enclosed by closed oriented facets (filtered, then exact).

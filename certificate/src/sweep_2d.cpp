@@ -36,9 +36,10 @@ struct Segment {
   int weight;     // leftward-ray crossing sign of the oriented segment
 };
 
-struct Key {
+struct Key {  // the segment itself, not only its index: a comparison touches no other memory
   std::uint32_t segment;
   int weight;
+  Segment s;
 };
 
 // The comparison needs the segments and a place to record a contact it notices.
@@ -51,7 +52,12 @@ struct Context {
 
 // Whether a point is left of segment f along the sweep line through it (f spans that line):
 // +1 left, -1 right, 0 on f's line (the point is then on f, f spanning the sweep there).
-Sign side(const Segment& f, const Point2& p) { return predicates::orient2d(f.lo, f.hi, p); }
+// An end of f itself is decided without the predicate (its filter cannot certify a zero, so the
+// exact stage would run): the common case at shared endpoints.
+Sign side(const Segment& f, const Point2& p) {
+  if (p == f.lo || p == f.hi) return Sign::zero;
+  return predicates::orient2d(f.lo, f.hi, p);
+}
 
 struct LeftOf {
   Context* context = nullptr;
@@ -59,22 +65,23 @@ struct LeftOf {
     if (a.segment == b.segment) return false;
     if (a.segment == UINT32_MAX) return point_left_of(b);
     if (b.segment == UINT32_MAX) return !point_left_of(a);
-    const Segment& e = (*context->segments)[a.segment];
-    const Segment& f = (*context->segments)[b.segment];
+    const Segment& e = a.s;
+    const Segment& f = b.s;
     // Decide at the later lower end: it lies on the sweep line where both cross it.
     const bool e_later = !lex_less(e.lo, f.lo);
     const Segment& later = e_later ? e : f;
     const Segment& other = e_later ? f : e;
+    const bool same_start = later.lo == other.lo;
     Sign s = side(other, later.lo);
     if (s == Sign::zero) {
-      if (!(later.lo == other.lo)) note(a.segment, b.segment);  // a lower end inside the other
+      if (!same_start) note(a.segment, b.segment);  // a lower end inside the other
       s = side(other, later.hi);
       if (s == Sign::zero) note(a.segment, b.segment), s = a.segment < b.segment ? Sign::positive : Sign::negative;
     }
     return (s == Sign::positive) == e_later;  // the later one is left of the other
   }
   bool point_left_of(const Key& k) const {
-    const Segment& f = (*context->segments)[k.segment];
+    const Segment& f = k.s;
     const Sign s = side(f, context->point);
     return s != Sign::negative;  // on f: at its lower end (or inside it), a point just left of it
   }
@@ -99,46 +106,93 @@ struct SubtreeWeight {
 
 using Status = __gnu_pbds::tree<Key, __gnu_pbds::null_type, LeftOf, __gnu_pbds::rb_tree_tag, SubtreeWeight>;
 
-struct Event {
-  Point2 at;
-  int kind;  // 0 leave, 1 enter, 2 query (the order at one point)
-  std::uint32_t index;
-  friend bool operator<(const Event& a, const Event& b) {
-    if (!(a.at == b.at)) return lex_less(a.at, b.at);
-    return a.kind != b.kind ? a.kind < b.kind : a.index < b.index;
-  }
-};
-
 class Sweep {
  public:
   Sweep(const MeshView& m, const FacetSet& set) : m_(m), set_(set), status_(LeftOf{&context_}) {
     context_.segments = &segments_;
+    segments_.reserve(set.size());
     for (std::size_t f = 0; f < set.size(); ++f) {
-      const Point2 a = m.p2(set.facet(f)[0]), b = m.p2(set.facet(f)[1]);
+      const Index u = set.facet(f)[0], w = set.facet(f)[1];
+      const Point2 a = m.p2(u), b = m.p2(w);
       const int weight = a.y > b.y ? 1 : (a.y < b.y ? -1 : 0);
       segments_.push_back(lex_less(a, b) ? Segment{a, b, weight} : Segment{b, a, weight});
     }
   }
 
   // The first contact, as (segment, segment), or (-1, -1); answers the queries on the way.
+  // The events are the segments' endpoints in sweep order: the endpoints sorted once, each
+  // with its segments ending and starting there (a counting sort), and the queries merged in.
   std::pair<std::int64_t, std::int64_t> run(const std::vector<std::array<double, 2>>& queries, std::vector<SweepAnswer>& answers) {
-    std::vector<Event> events;
-    for (std::uint32_t f = 0; f < segments_.size(); ++f) events.push_back({segments_[f].lo, 1, f}), events.push_back({segments_[f].hi, 0, f});
-    for (std::uint32_t q = 0; q < queries.size(); ++q) events.push_back({{queries[q][0], queries[q][1]}, 2, q});
-    std::sort(events.begin(), events.end());
+    const EndpointEvents events = endpoint_events();
+    std::vector<std::uint32_t> by_point(queries.size());
+    for (std::uint32_t q = 0; q < queries.size(); ++q) by_point[q] = q;
+    auto query_at = [&](std::uint32_t q) { return Point2{queries[q][0], queries[q][1]}; };
+    std::sort(by_point.begin(), by_point.end(), [&](std::uint32_t a, std::uint32_t b) {
+      return query_at(a) == query_at(b) ? a < b : lex_less(query_at(a), query_at(b));
+    });
     answers.assign(queries.size(), {});
     where_.assign(segments_.size(), status_.end());
-    for (const Event& e : events) {
-      if (e.kind == 0) leave(e.index);
-      if (e.kind == 1) enter(e.index);
-      if (e.kind == 2) answers[e.index] = answer(e.at);
-      if (found_a_ >= 0) break;
-      if (context_.contact_a >= 0) return {context_.contact_a, context_.contact_b};
+    std::size_t next_query = 0;
+    auto answer_until = [&](auto&& before_or_at) {
+      for (; next_query < by_point.size() && before_or_at(query_at(by_point[next_query])); ++next_query)
+        answers[by_point[next_query]] = answer(query_at(by_point[next_query]));
+    };
+    for (std::size_t i = 0, j = 0; i < events.order.size(); i = j) {
+      const Point2 here = m_.p2(events.order[i]);
+      while (j < events.order.size() && m_.p2(events.order[j]) == here) ++j;  // one point, maybe several ids
+      answer_until([&](const Point2& q) { return lex_less(q, here); });
+      for (int kind = 0; kind < 2; ++kind)  // at one point: the segments ending there leave, then those starting enter
+        for (std::size_t k = i; k < j; ++k)
+          for (std::uint32_t f : events.at(kind, events.order[k])) {
+            kind == 0 ? leave(f) : enter(f);
+            if (found_a_ >= 0) return {found_a_, found_b_};
+            if (context_.contact_a >= 0) return {context_.contact_a, context_.contact_b};
+          }
+      answer_until([&](const Point2& q) { return q == here; });
     }
+    answer_until([](const Point2&) { return true; });
     return {found_a_, found_b_};
   }
 
  private:
+  // The endpoints in sweep order, and of each its segments ending (kind 0) and starting
+  // (kind 1) there, in segment order.
+  struct EndpointEvents {
+    std::vector<Index> order;
+    std::vector<std::uint32_t> first[2], segment[2];  // per vertex id: segment[kind][first[kind][v] ..]
+    struct Span {
+      const std::uint32_t *first, *last;
+      const std::uint32_t* begin() const { return first; }
+      const std::uint32_t* end() const { return last; }
+    };
+    Span at(int kind, Index v) const { return {segment[kind].data() + first[kind][v], segment[kind].data() + first[kind][v + 1]}; }
+  };
+  EndpointEvents endpoint_events() const {
+    EndpointEvents ev;
+    const std::size_t n = m_.vertex_count;
+    for (int kind = 0; kind < 2; ++kind) ev.first[kind].assign(n + 1, 0);
+    std::vector<char> used(n, 0);
+    auto end_of = [&](std::size_t f, int kind) {  // kind 0: the upper end (leave), 1: the lower (enter)
+      const Index u = set_.facet(f)[0], w = set_.facet(f)[1];
+      const bool u_lower = lex_less(m_.p2(u), m_.p2(w));
+      return kind == 1 ? (u_lower ? u : w) : (u_lower ? w : u);
+    };
+    for (std::size_t f = 0; f < segments_.size(); ++f)
+      for (int kind = 0; kind < 2; ++kind) {
+        const Index v = end_of(f, kind);
+        ++ev.first[kind][v + 1];
+        if (!used[v]) used[v] = 1, ev.order.push_back(v);
+      }
+    for (int kind = 0; kind < 2; ++kind) {
+      for (std::size_t v = 0; v < n; ++v) ev.first[kind][v + 1] += ev.first[kind][v];
+      ev.segment[kind].resize(segments_.size());
+      std::vector<std::uint32_t> fill(ev.first[kind].begin(), ev.first[kind].end() - 1);
+      for (std::size_t f = 0; f < segments_.size(); ++f) ev.segment[kind][fill[end_of(f, kind)]++] = static_cast<std::uint32_t>(f);
+    }
+    std::sort(ev.order.begin(), ev.order.end(), [&](Index a, Index b) { return lex_less(m_.p2(a), m_.p2(b)) || (m_.p2(a) == m_.p2(b) && a < b); });
+    return ev;
+  }
+
   void test(Status::iterator a, Status::iterator b) {
     if (a == status_.end() || b == status_.end() || found_a_ >= 0) return;
     if (contact_of(m_, set_, a->segment, b->segment, Defect::t_junction, Defect::boundary_intersection, "").defect != Defect::none)
@@ -146,7 +200,7 @@ class Sweep {
   }
   Status::iterator before(Status::iterator it) { return it == status_.begin() ? status_.end() : std::prev(it); }
   void enter(std::uint32_t f) {
-    const auto it = status_.insert(Key{f, segments_[f].weight}).first;
+    const auto it = status_.insert(Key{f, segments_[f].weight, segments_[f]}).first;
     where_[f] = it;
     test(before(it), it);
     test(it, std::next(it));
@@ -165,8 +219,7 @@ class Sweep {
     for (auto node = status_.node_begin(); node != status_.node_end();) {
       const Key& k = **node;
       if (left_of.point_left_of(k)) {
-        if (predicates::orient2d(segments_[k.segment].lo, segments_[k.segment].hi, q) == Sign::zero &&
-            !(segments_[k.segment].lo == q))
+        if (side(k.s, q) == Sign::zero && !(k.s.lo == q))
           out.on_facet = true;
         node = node.get_l_child();
         continue;

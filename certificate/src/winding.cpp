@@ -115,24 +115,31 @@ Finding cover_defect(const FacetSet& b, const Components& comps, std::size_t c, 
                      " times (winding numbers " + std::to_string(others) + " and " + std::to_string(inside) + ")");
 }
 
-// 2D: one sweep answers W just left of every component's lowest-leftmost vertex, where the
-// component itself contributes nothing (it lies above and to the right), so W there is
-// W_others; and the first facet left of it, whose component bounds the face around it.
-// An island's ray can only hit a component whose lowest-leftmost vertex comes earlier in
-// that order, so resolving `around` in that order needs no recursion.
-Finding single_cover_2d(const MeshView& m, const FacetSet& b, Components& comps) {
+// 2D: one sweep answers W just left of every component's lowest-leftmost vertex v, where the
+// component itself contributes nothing (it lies above and to the right); with the local
+// correction at a pinch (winding_offset: the edges of other components between that point and
+// the component's last edge at v) that is W_others next to the component. For an island the
+// point just left of v is in the unmeshed face around it (the offset is 0), and the first facet
+// left of it bounds that face. An island's ray can only hit a component whose lowest-leftmost
+// vertex comes earlier in that order, so resolving `around` in that order needs no recursion
+// (`around` of a cavity is not used).
+Finding single_cover_2d(const MeshView& m, const FacetSet& b, Components& comps,
+                        const std::vector<std::array<double, 2>>& hole_points) {
   const std::size_t n = comps.facets.size();
   std::vector<std::array<double, 2>> at(n);
   for (std::size_t c = 0; c < n; ++c) at[c] = {m.coord(comps.vertex[c], 0), m.coord(comps.vertex[c], 1)};
+  at.insert(at.end(), hole_points.begin(), hole_points.end());
   std::vector<SweepAnswer> answers;
   Finding f = sweep_2d(m, b, Defect::t_junction, Defect::boundary_intersection, "boundary edge", at, answers);
   if (f.defect != Defect::none) return f;
+  comps.hole_answers.assign(answers.begin() + static_cast<std::ptrdiff_t>(n), answers.end());
+  at.resize(n);
   std::vector<std::size_t> order(n);
   for (std::size_t c = 0; c < n; ++c) order[c] = c;
   std::sort(order.begin(), order.end(), [&](std::size_t x, std::size_t y) { return at[x][1] != at[y][1] ? at[x][1] < at[y][1] : at[x][0] < at[y][0]; });
   comps.around.assign(n, -1);
   for (std::size_t c : order) {
-    if (f = cover_defect(b, comps, c, answers[c].winding); f.defect != Defect::none) return f;
+    if (f = cover_defect(b, comps, c, answers[c].winding + comps.winding_offset[c]); f.defect != Defect::none) return f;
     if (answers[c].left_facet < 0) continue;
     const std::size_t hit = comps.of_facet[static_cast<std::size_t>(answers[c].left_facet)];
     comps.around[c] = comps.measure_sign[hit] < 0 ? static_cast<std::int64_t>(hit) : comps.around[hit];
@@ -147,8 +154,9 @@ Finding single_cover_2d(const MeshView& m, const FacetSet& b, Components& comps)
 // component C, W is W_others(v) on one side and W_others(v) + sign(C) on the other (v a vertex
 // of C), and both sides must be 0 or 1. 2D: a plane sweep, O(B log B) whatever the nesting;
 // 3D: per component, the components whose box holds its vertex (O(k B) in the worst case).
-Finding check_single_cover(const MeshView& m, const FacetSet& b, Components& comps) {
-  if (m.dim == 2) return single_cover_2d(m, b, comps);
+Finding check_single_cover(const MeshView& m, const FacetSet& b, Components& comps,
+                           const std::vector<std::array<double, 2>>& hole_points) {
+  if (m.dim == 2) return single_cover_2d(m, b, comps, hole_points);
   const std::size_t n = comps.facets.size();
   comps.enclosed_by.assign(n, {});
   for (std::size_t c = 0; c < n; ++c) {

@@ -9,7 +9,9 @@
 #include <vector>
 
 #include "certimesh/certificate/check_mesh.h"
+#include "certimesh/fuzz/valid_meshes.h"
 #include "mesh_oracle.h"
+#include "pinch_meshes.h"
 #include "unit_meshes.h"
 
 namespace certimesh::certificate::test {
@@ -133,6 +135,26 @@ TEST(CertificateAdversary, MeasureDifferenceIsBoundedAndReported) {
   }
 }
 
+// The domain's area is summed exactly even when one polygon mixes exponents 1000 apart (the
+// sum is kept in units of its smallest product, not rounded per term).
+TEST(CertificateAdversary, DomainMeasureIsExactAcrossExponents) {
+  MeshData m;
+  m.dimension = 2;
+  const double big = std::ldexp(1.0, 500), small = std::ldexp(3.0, -500);
+  m.coordinates = {0, 0, big, 0, big, small, 0, 1};
+  m.triangles = {0, 1, 2, 0, 2, 3};  // a convex quadrilateral fanned from vertex 0
+  MeshData d = m;
+  d.triangles.clear();
+  d.segments = {0, 1, 1, 2, 2, 3, 3, 0};
+  const Report r = check_mesh(m, &d);
+  ASSERT_TRUE(r.valid) << r.finding.message;
+  const mpq_class exact = polygon_area(d, {0, 1, 2, 3});  // oracle: the shoelace sum in rationals
+  EXPECT_EQ(exact, mesh_area(m));
+  EXPECT_EQ(r.statistics.domain_measure, exact.get_d());
+  EXPECT_EQ(r.statistics.measure, exact.get_d());
+  EXPECT_EQ(r.statistics.measure_difference, 0.0);
+}
+
 // Statistics at coordinates near 2^900 and 2^-1000: the deviation of the rounded vertex scales
 // with the mesh (it used to read 0: squares overflowed or underflowed).
 TEST(CertificateAdversary, DeviationDoesNotOverflowOrUnderflow) {
@@ -179,6 +201,272 @@ TEST(CertificateAdversary, UnderflowCannotHideADoubleCover) {
     const Report r = check_mesh(m);
     EXPECT_EQ(defect_name(r.finding.defect), defect_name(Defect::multiple_cover)) << "scale 2^" << s << ": " << r.finding.message;
   }
+}
+
+// ---- Pinches (issue 12 item 5, design decision 8): the neighbours of each valid pinch that an
+// adversary would try. The valid pinches themselves are in valid_meshes_test.cpp.
+
+std::string defect_of(const MeshData& m, const MeshData* domain = nullptr) {
+  return std::string(defect_name(check_mesh(m, domain).finding.defect));
+}
+
+// Whether point p of m lies in the closed triangle (a, b, c) of m, exactly.
+bool in_triangle(const MeshData& m, Index p, Index a, Index b, Index c) {
+  return twice_area(m, a, b, p) >= 0 && twice_area(m, b, c, p) >= 0 && twice_area(m, c, a, p) >= 0;
+}
+
+// Two sheets glued at a vertex covering an area twice. A triangle inside another, sharing a
+// corner: the boundary edges at that corner leave, leave, enter, enter (counterclockwise), so
+// no pairing closes curves with the mesh on one side. Two fans around one centre, one inside the
+// other: the centre is interior to both, the boundary two disjoint loops, W = 2 inside the
+// small one.
+TEST(CertificateAdversary, TwoSheetsGluedAtAVertex2d) {
+  MeshData nested;
+  nested.dimension = 2;
+  append(nested.coordinates, {0, 0, 4, 0, 0, 4, 2, 1, 1, 2});
+  append(nested.triangles, {0, 1, 2, 0, 3, 4});
+  ASSERT_TRUE(testing::all_elements_positive(nested));
+  ASSERT_TRUE(in_triangle(nested, 3, 0, 1, 2) && in_triangle(nested, 4, 0, 1, 2)) << "the small sheet lies in the big one";
+  EXPECT_EQ(defect_of(nested), "non_manifold_boundary");
+  MeshData fans;
+  fans.dimension = 2;
+  append(fans.coordinates, {0, 0, 2, 0, 0, 2, -2, 0, 0, -2, 0.5, 0.5, -0.5, 0.5, -0.5, -0.5, 0.5, -0.5});
+  for (Index i = 0; i < 4; ++i) append(fans.triangles, {0, 1 + i, 1 + (i + 1) % 4, 0, 5 + i, 5 + (i + 1) % 4});
+  ASSERT_TRUE(testing::all_elements_positive(fans));
+  ASSERT_GT(twice_area(fans, 1, 2, 5), 0) << "the small fan's ring lies strictly inside the big one's";
+  EXPECT_EQ(defect_of(fans), "multiple_cover");
+}
+
+// The same in 3D: a small tetrahedron inside a big one sharing a vertex (winding 2 in it), and
+// sharing an edge (the four boundary triangles around the edge do not alternate).
+TEST(CertificateAdversary, TwoSheetsGluedAtAVertexOrEdge3d) {
+  MeshData at_vertex = simplices(3, {{0, 0, 0, 4, 0, 0, 0, 4, 0, 0, 0, 4}});
+  append(at_vertex.coordinates, {1, 1, 0.5, 0.5, 1, 1, 1, 0.5, 1});
+  append(at_vertex.tetrahedra, {0, 4, 5, 6});
+  if (det3(at_vertex, &at_vertex.tetrahedra[4]) < 0) std::swap(at_vertex.tetrahedra[5], at_vertex.tetrahedra[6]);
+  ASSERT_TRUE(testing::all_elements_positive(at_vertex));
+  EXPECT_EQ(defect_of(at_vertex), "multiple_cover");
+  MeshData at_edge = simplices(3, {{0, 0, 0, 4, 0, 0, 0, 4, 0, 0, 0, 4}});
+  append(at_edge.coordinates, {1, 1, 0.5, 1, 0.5, 1});
+  append(at_edge.tetrahedra, {0, 1, 4, 5});
+  if (det3(at_edge, &at_edge.tetrahedra[4]) < 0) std::swap(at_edge.tetrahedra[6], at_edge.tetrahedra[7]);
+  ASSERT_TRUE(testing::all_elements_positive(at_edge));
+  EXPECT_EQ(defect_of(at_edge), "non_manifold_boundary");
+}
+
+// A bow-tie whose elements pass through the pinch: the unit square at the origin and a triangle
+// with an edge from the shared corner into the square (it overlaps the square's corner); and a
+// triangle whose edge passes through the square's corner without having it as a vertex.
+TEST(CertificateAdversary, ElementsThroughThePinch) {
+  MeshData into;
+  into.dimension = 2;
+  append(into.coordinates, {0, 0, 1, 0, 1, 1, 0, 1, 0.5, 2, -1, 0});
+  append(into.triangles, {0, 1, 2, 0, 2, 3, 0, 4, 5});
+  ASSERT_TRUE(testing::all_elements_positive(into));
+  ASSERT_GT(twice_area(into, 0, 4, 3), 0) << "the triangle's edge 0-4 enters the square's corner";
+  EXPECT_EQ(defect_of(into), "non_manifold_boundary");
+  MeshData through;
+  through.dimension = 2;
+  append(through.coordinates, {0, 0, 1, 0, 1, 1, 0, 1, 1, -1, -1, 1, -1, -1});
+  append(through.triangles, {0, 1, 2, 0, 2, 3, 4, 5, 6});
+  ASSERT_TRUE(testing::all_elements_positive(through));
+  ASSERT_EQ(twice_area(through, 4, 5, 0), 0) << "the corner lies on the triangle's edge";
+  EXPECT_EQ(defect_of(through), "t_junction");
+}
+
+// Two squares sharing a corner against their domain: one part missing; a part doubled (a copy
+// on new vertices with the same coordinates, a copy shrunk about the pinch, a copy shrunk
+// about its own centre).
+TEST(CertificateAdversary, PinchedPartMissingOrDoubled) {
+  const MeshData both = kept_squares(2, [](int i, int j) { return i == j; });
+  const MeshData domain = boundary_as_domain(both);
+  ASSERT_TRUE(check_mesh(both, &domain).valid);
+  const MeshData one = kept_squares(2, [](int i, int j) { return i == 0 && j == 0; });
+  EXPECT_EQ(defect_of(one, &domain), "domain_boundary_not_covered");
+  Index pinch = 0;  // the vertex (1, 1)
+  while (both.coordinates[2 * pinch] != 1 || both.coordinates[2 * pinch + 1] != 1) ++pinch;
+  auto doubled = [&](double scale, double cx, double cy, bool share_pinch) {
+    MeshData m = both;
+    const auto first = static_cast<Index>(m.point_count());
+    for (Index v = 0; v < both.point_count(); ++v)
+      append(m.coordinates, {cx + scale * (both.coordinates[2 * v] - cx), cy + scale * (both.coordinates[2 * v + 1] - cy)});
+    for (std::size_t t = 6; t < 12; ++t) {  // the second square's two triangles
+      const Index v = both.triangles[t];
+      m.triangles.push_back(share_pinch && v == pinch ? pinch : first + v);
+    }
+    drop_unused_vertices(m);
+    return m;
+  };
+  ASSERT_EQ(both.coordinates[2 * both.triangles[6]], 1) << "triangles 2, 3 are the square [1,2]^2";
+  EXPECT_EQ(defect_of(doubled(1, 0, 0, false)), "duplicate_vertex");
+  const MeshData shrunk_at_pinch = doubled(0.5, 1, 1, true);
+  ASSERT_TRUE(testing::all_elements_positive(shrunk_at_pinch));
+  EXPECT_EQ(defect_of(shrunk_at_pinch), "t_junction") << "its edges at the pinch run along the big square's";
+  const MeshData shrunk_inside = doubled(0.5, 1.5, 1.5, false);
+  ASSERT_TRUE(testing::all_elements_positive(shrunk_inside));
+  EXPECT_EQ(defect_of(shrunk_inside), "multiple_cover");
+  EXPECT_EQ(defect_of(shrunk_inside, &domain), "multiple_cover");
+}
+
+// A pairing across the meshed side of a pinch would join a hole touching the outer loop to it
+// in one counterclockwise curve: no cavity, and an empty region of the domain would go
+// unnoticed. 2D: the 4 x 4 grid without a triangle that touches the boundary at one vertex,
+// against the domain with that triangle's segments and no hole point; 3D: the 3^3 grid without
+// a tetrahedron touching the boundary along an edge, against a domain whose cavity shell is
+// oriented like the outer one (winding number 2 inside: solid, decision 8).
+TEST(CertificateAdversary, EmptyRegionAtAPinchIsNotMeshed) {
+  for (int dim : {2, 3}) {
+    const int n = dim == 2 ? 4 : 3;
+    MeshData m = dim == 2 ? square_grid(n) : kuhn_grid(n);
+    auto& cells = dim == 2 ? m.triangles : m.tetrahedra;
+    const auto k1 = static_cast<std::size_t>(dim + 1);
+    const std::size_t removed = element_touching_boundary(m, n, dim - 1);  // 2D: at a vertex; 3D: along an edge
+    ASSERT_NE(removed, SIZE_MAX);
+    const std::vector<Index> gone(cells.begin() + static_cast<std::ptrdiff_t>(removed * k1), cells.begin() + static_cast<std::ptrdiff_t>((removed + 1) * k1));
+    std::vector<double> centre(static_cast<std::size_t>(dim), 0.0);  // strictly inside it (exact in 3D)
+    for (Index v : gone)
+      for (int k = 0; k < dim; ++k) centre[static_cast<std::size_t>(k)] += m.coordinates[v * static_cast<std::size_t>(dim) + k];
+    for (double& c : centre) c /= static_cast<double>(dim + 1);
+    erase_element(m, removed);
+    ASSERT_TRUE(check_mesh(m).valid);
+    MeshData domain = boundary_as_domain(m);
+    if (dim == 3)  // the cavity's triangles (all three vertices on the removed tetrahedron) turned outward
+      for (std::size_t t = 0; t < domain.triangle_count(); ++t) {
+        Index* x = &domain.triangles[3 * t];
+        if (std::all_of(x, x + 3, [&](Index v) { return std::count(gone.begin(), gone.end(), v) > 0; })) std::swap(x[1], x[2]);
+      }
+    EXPECT_EQ(defect_of(m, &domain), "region_not_meshed") << dim << "D";
+    domain.holes = centre;
+    EXPECT_EQ(defect_of(m, &domain), "none") << dim << "D, with a hole point in the cavity";
+  }
+}
+
+// The lowest vertex of a hole is a pinch with the outer loop: the square [0,2]^2 without the
+// triangle (0,0) (1,1/2) (1/2,1) at its corner. Just left of (0,0) lies outside the mesh, but
+// next to the hole the outer loop winds once: W there is read counterclockwise of the hole's
+// last edge at the corner, past the outer loop's entering edge (a correction of +1).
+TEST(CertificateAdversary, HoleAtTheCornerOfTheOuterLoop) {
+  MeshData m;
+  m.dimension = 2;
+  append(m.coordinates, {0, 0, 2, 0, 2, 2, 0, 2, 1, 0.5, 0.5, 1});
+  append(m.triangles, {0, 1, 4, 1, 2, 4, 4, 2, 5, 2, 3, 5, 3, 0, 5});
+  ASSERT_TRUE(testing::all_elements_positive(m));
+  EXPECT_EQ(mesh_area(m), 4 - polygon_area(m, {0, 4, 5})) << "the elements tile the square minus the hole";
+  const Report r = check_mesh(m);
+  EXPECT_TRUE(r.valid) << r.finding.message;
+  EXPECT_EQ(r.statistics.boundary_components, 2u);
+  MeshData with_hole = boundary_as_domain(m);
+  with_hole.holes = {0.5, 0.5};
+  EXPECT_EQ(defect_of(m, &with_hole), "none");
+  MeshData filled = m;  // the hole filled
+  append(filled.triangles, {0, 4, 5});
+  EXPECT_EQ(defect_of(filled), "none");
+  EXPECT_EQ(defect_of(filled, &with_hole), "hole_covered");
+}
+
+// The mesh pinches where the domain has a sub-ulp gap: the quad A(0,0) B(6,2) C(6,4) D(0,4)
+// with a triangular hole whose corner w = (1, 0x1.5555555555556p-2) lies strictly above the
+// segment AB (y = x/3), inside its rounding box. The mesh takes w as a vertex of its outer loop
+// (A -> w -> B): its boundary edge A-w lies on no single domain segment (w, a domain vertex,
+// is on AB only exactly, and it is not).
+TEST(CertificateAdversary, MeshPinchesAcrossASubUlpGap) {
+  MeshData m;
+  m.dimension = 2;
+  append(m.coordinates, {0, 0, 6, 2, 6, 4, 0, 4, 1, 0x1.5555555555556p-2, 2, 2, 1, 2});
+  append(m.triangles, {0, 4, 3, 4, 6, 3, 6, 2, 3, 6, 5, 2, 5, 1, 2, 4, 1, 5});
+  ASSERT_TRUE(testing::all_elements_positive(m));
+  ASSERT_GT(twice_area(m, 0, 1, 4), 0) << "w is strictly above AB: the domain's hole does not touch AB";
+  EXPECT_TRUE(check_mesh(m).valid) << "alone, a valid mesh pinched at w";
+  MeshData d = m;
+  d.triangles.clear();
+  append(d.segments, {0, 1, 1, 2, 2, 3, 3, 0, 4, 5, 5, 6, 6, 4});
+  d.holes = {1.25, 1.5};
+  EXPECT_EQ(defect_of(m, &d), "facet_off_domain_boundary");
+}
+
+// The domain pinches where the mesh does not: the 4 x 4 square whose hole, a triangle, touches
+// the bottom side at (1,0), against the full grid (the hole meshed).
+TEST(CertificateAdversary, DomainPinchesMeshDoesNot) {
+  MeshData holed = square_grid(4);
+  const std::int64_t t = element_with(holed, {grid_vertex(4, 1, 0), grid_vertex(4, 2, 1), grid_vertex(4, 1, 1)});
+  ASSERT_GE(t, 0);
+  erase_element(holed, static_cast<std::size_t>(t));
+  MeshData domain = boundary_as_domain(holed);
+  domain.holes = {1.25, 0.5};
+  ASSERT_TRUE(check_mesh(holed, &domain).valid);
+  EXPECT_EQ(defect_of(square_grid(4), &domain), "hole_covered");
+  // 3D: two cubes sharing an edge, against a mesh that also fills one of the cubes beside it.
+  const MeshData two = kept_cubes(2, [](int i, int j, int k) { return i == j && k == 0; });
+  const MeshData three = kept_cubes(2, [](int i, int j, int k) { return j == 0 && k == 0 ? true : i == j && k == 0; });
+  const MeshData cubes = boundary_as_domain(two);
+  ASSERT_TRUE(check_mesh(two, &cubes).valid);
+  ASSERT_TRUE(check_mesh(three).valid);
+  // Its face triangle (1,0,0) (2,1,0) (1,1,0) has every vertex on the domain, no two cubes' faces in common.
+  EXPECT_EQ(defect_of(three, &cubes), "facet_off_domain_boundary");
+}
+
+// Item 1 in 3D: the mesh triangles on a domain triangle are all boundary triangles with their
+// elements on one side, or all interior. The grid of [0,2]^3 plus a slab [2, 2 + 2^-20] x
+// [0,1] x [0,2] glued to its face x = 2 is a valid mesh; with a boundary tolerance of 2^-10 the
+// slab's outer vertices count as on that face, so every boundary facet lies on one domain
+// triangle and every boundary vertex on the domain, but the face x = 2 is then covered by
+// interior triangles (where the slab is glued) and by boundary ones (elsewhere, and the slab's
+// outer side): the mesh boundary leaves the face through the tolerance. Refused.
+TEST(CertificateAdversary, DomainTriangleBoundedFromOneSideOnly3d) {
+  MeshData m = kuhn_grid(2);
+  MeshData slab = kept_cubes(2, [](int i, int j, int) { return i == 0 && j == 0; });  // [0,1] x [0,1] x [0,2]
+  const auto first = static_cast<Index>(m.point_count());
+  std::vector<Index> id(slab.point_count());
+  for (Index v = 0; v < slab.point_count(); ++v) {
+    const double* p = &slab.coordinates[3 * v];
+    if (p[0] == 0) {  // on x = 2: the grid's own vertex there
+      id[v] = grid_vertex(2, 2, static_cast<int>(p[1]), static_cast<int>(p[2]));
+      continue;
+    }
+    id[v] = static_cast<Index>(m.point_count());
+    append(m.coordinates, {2 + 0x1p-20, p[1], p[2]});
+  }
+  for (Index v : slab.tetrahedra) m.tetrahedra.push_back(id[v]);
+  ASSERT_GT(m.point_count(), first);
+  ASSERT_TRUE(testing::all_elements_positive(m));
+  ASSERT_TRUE(check_mesh(m).valid) << "alone, a valid mesh of the cube and the slab";
+  const MeshData cube = fuzz::cube_surface_domain(2);
+  ASSERT_TRUE(check_mesh(kuhn_grid(2), &cube).valid);
+  EXPECT_EQ(defect_of(m, &cube), "vertex_off_domain_boundary") << "by the exact rule the slab is off the domain";
+  CheckOptions loose;
+  loose.boundary_tolerance.absolute = 0x1p-10;
+  ASSERT_TRUE(check_mesh(kuhn_grid(2), &cube, loose).valid);
+  const Report r = check_mesh(m, &cube, loose);
+  EXPECT_EQ(defect_name(r.finding.defect), defect_name(Defect::domain_boundary_not_covered)) << r.finding.message;
+  EXPECT_NE(r.finding.message.find("partly by mesh boundary triangles and partly by interior ones"), std::string::npos) << r.finding.message;
+}
+
+// The 3D limitation of proofs/mesh_certificate.md section 7, pinned: a tetrahedron touching four
+// others, one at each corner (each the point reflection of it through that corner, so they meet
+// it only there), is a valid tiling, but none of its vertices is off the other components, where
+// their winding numbers would be read: refused, saying why, rather than read at a pinch.
+TEST(CertificateAdversary, ComponentWithEveryVertexShared3d) {
+  MeshData m = simplices(3, {{0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1}});
+  for (Index p = 0; p < 4; ++p) {
+    const auto first = static_cast<Index>(m.point_count());
+    std::vector<Index> tet{p};
+    for (Index q = 0; q < 4; ++q) {
+      if (q == p) continue;
+      for (int k = 0; k < 3; ++k) m.coordinates.push_back(2 * m.coordinates[3 * p + k] - m.coordinates[3 * q + k]);
+      tet.push_back(static_cast<Index>(m.point_count() - 1));
+    }
+    if (testing::oracle_element_sign(m, tet) < 0) std::swap(tet[2], tet[3]);
+    m.tetrahedra.insert(m.tetrahedra.end(), tet.begin(), tet.end());
+    ASSERT_EQ(m.point_count(), first + 3);
+  }
+  ASSERT_TRUE(testing::all_elements_positive(m));
+  const Report r = check_mesh(m);
+  EXPECT_EQ(defect_name(r.finding.defect), defect_name(Defect::non_manifold_boundary));
+  EXPECT_NE(r.finding.message.find("limitation"), std::string::npos) << r.finding.message;
+  MeshData three_corners = m;  // with one corner free the same tiling is certified
+  three_corners.tetrahedra.resize(16);
+  drop_unused_vertices(three_corners);
+  EXPECT_TRUE(check_mesh(three_corners).valid) << check_mesh(three_corners).finding.message;
 }
 
 }  // namespace

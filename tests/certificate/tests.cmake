@@ -5,3 +5,8 @@ add_test(NAME certificate.peer_meshes_gmsh
          COMMAND ${CERTIMESH_CERT_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/peer_meshes_test.py $<TARGET_FILE:certimesh>
                  ${CMAKE_CURRENT_BINARY_DIR}/peer_meshes)
 set_tests_properties(certificate.peer_meshes_gmsh PROPERTIES SKIP_RETURN_CODE 77 TIMEOUT 120 LABELS "certificate;interop")
+# `certimesh mesh` on 2D domains with pinch vertices, certified (pinch_cli_test.py).
+add_test(NAME certificate.pinch_cli
+         COMMAND ${CERTIMESH_CERT_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/pinch_cli_test.py $<TARGET_FILE:certimesh>
+                 ${CMAKE_CURRENT_BINARY_DIR}/pinch_cli)
+set_tests_properties(certificate.pinch_cli PROPERTIES TIMEOUT 120 LABELS "certificate;cli")

@@ -104,17 +104,31 @@ TEST(CertificateUnit, OrientationDefects) {
   expect_defect(simplices(3, {{0, 0, 0, 0, 1, 0, 1, 0, 0, 0, 0, 1}}), Defect::inverted_element);
 }
 
+// Parts sharing only a vertex are a valid pinch (design decision 8); a part nested inside
+// another at the shared vertex (2D) or edge (3D) is not: the boundary facets around it do not
+// alternate between the two orientations.
 TEST(CertificateUnit, PinchedBoundary) {
   MeshData bowtie = simplices(2, {{0, 0, 1, 0, 1, 1}, {-1, 0, -1, -1, 0.5, 0.5}});
   bowtie.coordinates.resize(10);  // element 1 reuses vertex 0 instead of its own (0.5, 0.5)
   bowtie.triangles[5] = 0;
-  EXPECT_EQ(expect_defect(bowtie, Defect::non_manifold_boundary).finding.vertex, 0);
+  EXPECT_TRUE(check_mesh(bowtie).valid);
   MeshData tets;  // two tetrahedra sharing only vertex 0
   tets.dimension = 3;
   tets.coordinates = {0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1, -1, 0, 0, 0, 0, -1, 0, -1, 0};
   tets.tetrahedra = {0, 1, 2, 3, 0, 4, 5, 6};
   EXPECT_EQ(det3(tets, &tets.tetrahedra[4]), 1.0);
-  EXPECT_EQ(expect_defect(tets, Defect::non_manifold_boundary).finding.vertex, 0);
+  EXPECT_TRUE(check_mesh(tets).valid);
+  MeshData nested;  // a triangle inside another, sharing vertex 0
+  nested.dimension = 2;
+  nested.coordinates = {0, 0, 4, 0, 0, 4, 2, 1, 1, 2};
+  nested.triangles = {0, 1, 2, 0, 3, 4};
+  ASSERT_GT(det2(nested, &nested.triangles[3]), 0);
+  EXPECT_EQ(expect_defect(nested, Defect::non_manifold_boundary).finding.vertex, 0);
+  MeshData book = simplices(3, {{0, 0, 0, 4, 0, 0, 0, 4, 0, 0, 0, 4}});  // and one inside it on edge 0-1
+  append(book.coordinates, {1, 1, 0.5, 1, 0.5, 1});
+  append(book.tetrahedra, {0, 1, 4, 5});
+  ASSERT_GT(det3(book, &book.tetrahedra[4]), 0);
+  EXPECT_EQ(expect_defect(book, Defect::non_manifold_boundary).finding.vertex, 0);
 }
 
 TEST(CertificateUnit, TJunctionAndCrossing) {

@@ -3,6 +3,8 @@
 // derived independently from the grid's shape.
 #include "rc_support.h"
 
+#include "pinch_meshes.h"
+
 #include <cmath>
 
 namespace certimesh::testing {
@@ -112,6 +114,56 @@ TEST(ValidMeshes, WorstQualityOfUnjitteredGrids) {
   ASSERT_TRUE(r3.valid) << describe(r3.finding);
   const double perimeter = 3 + 2 * std::sqrt(2.0) + std::sqrt(3.0);
   EXPECT_NEAR(r3.statistics.worst_quality, 216 * std::sqrt(2.0) / std::pow(perimeter, 3), 1e-9);
+}
+
+// Pinches (design decision 8), certified alone and against the domain whose boundary is the
+// mesh's own (read off with plain counting, pinch_meshes.h). The component counts follow the
+// pairing rule of proofs/mesh_certificate.md (across the unmeshed side at a pinch): two
+// squares sharing a corner are one curve, a hole touching the outer loop is a curve of its
+// own; solids sharing only a vertex are two surfaces, solids sharing an edge one.
+// A 2D hole needs its hole point (`holes`); a 3D cavity is one by its orientation.
+void expect_pinch_certified(const io::MeshData& mesh, std::size_t components, std::vector<double> holes = {}) {
+  ASSERT_TRUE(all_elements_positive(mesh));
+  const certificate::Report alone = check_mesh(mesh);
+  EXPECT_TRUE(alone.valid) << describe(alone.finding);
+  EXPECT_EQ(alone.statistics.boundary_components, components);
+  io::MeshData domain = certificate::test::boundary_as_domain(mesh);
+  domain.holes = std::move(holes);
+  const certificate::Report with_domain = check_mesh(mesh, &domain);
+  EXPECT_TRUE(with_domain.valid) << describe(with_domain.finding);
+}
+
+TEST(ValidMeshes, TwoSquaresSharingACorner) {
+  expect_pinch_certified(certificate::test::kept_squares(2, [](int i, int j) { return i == j; }), 1);
+}
+
+TEST(ValidMeshes, HoleTouchingTheOuterLoopAtAVertex) {
+  io::MeshData m = certificate::test::square_grid(4);
+  const std::size_t e = certificate::test::element_touching_boundary(m, 4, 1);
+  ASSERT_NE(e, SIZE_MAX);
+  std::vector<double> inside(2, 0.0);  // the removed triangle's rounded centroid: strictly inside it
+  for (int i = 0; i < 3; ++i)
+    for (int k = 0; k < 2; ++k) inside[static_cast<std::size_t>(k)] += m.coordinates[2 * m.triangles[3 * e + static_cast<std::size_t>(i)] + static_cast<std::size_t>(k)] / 3;
+  certificate::test::erase_element(m, e);
+  expect_pinch_certified(m, 2, inside);
+}
+
+TEST(ValidMeshes, TwoCubesSharingAVertex) {
+  expect_pinch_certified(certificate::test::kept_cubes(2, [](int i, int j, int k) { return i == j && j == k; }), 2);
+}
+
+TEST(ValidMeshes, TwoCubesSharingAnEdge) {
+  expect_pinch_certified(certificate::test::kept_cubes(2, [](int i, int j, int k) { return i == j && k == 0; }), 1);
+}
+
+TEST(ValidMeshes, CavityTouchingTheOuterShellAtAVertexOrAlongAnEdge) {
+  for (int count : {1, 2}) {
+    io::MeshData m = certificate::test::kuhn_grid(3);
+    const std::size_t e = certificate::test::element_touching_boundary(m, 3, count);
+    ASSERT_NE(e, SIZE_MAX);
+    certificate::test::erase_element(m, e);
+    expect_pinch_certified(m, 2);
+  }
 }
 
 }  // namespace

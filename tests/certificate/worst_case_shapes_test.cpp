@@ -87,5 +87,52 @@ TEST(WorstCaseShapes, NestedRings) {
   EXPECT_EQ(defect_of(filled), "duplicate_element");
 }
 
+// Appends (3 a + b) / 8 and (a + 3 b) / 8 for vertices a, b of m; returns the first new index.
+io::Index append_between(MeshData& m, io::Index a, io::Index b) {
+  const auto first = static_cast<io::Index>(m.point_count());
+  const auto d = static_cast<std::size_t>(m.dimension);
+  for (int w : {3, 1})
+    for (std::size_t k = 0; k < d; ++k) m.coordinates.push_back((w * m.coordinates[a * d + k] + (4 - w) * m.coordinates[b * d + k]) / 8);
+  return first;
+}
+
+// k parts pinched at one vertex (design decision 8): 2k boundary edges there, paired by one
+// angular sort. Valid alone and against its own boundary as the domain; a second sheet inside
+// one part, glued at the pinch, is refused (its edges there leave, leave, enter, enter).
+TEST(WorstCaseShapes, PinwheelOfManyParts) {
+  const MeshData m = fuzz::pinwheel_2d(500);
+  ASSERT_TRUE(testing::all_elements_positive(m));
+  const Report r = check_mesh(m);
+  EXPECT_TRUE(r.valid) << r.finding.message;
+  EXPECT_EQ(r.statistics.boundary_components, 1u) << "paired across the empty wedges: one curve around all parts";
+  MeshData domain;
+  domain.dimension = 2;
+  domain.coordinates = m.coordinates;
+  for (std::size_t t = 0; t < m.triangle_count(); ++t)
+    for (int i = 0; i < 3; ++i) domain.segments.insert(domain.segments.end(), {m.triangles[3 * t + i], m.triangles[3 * t + (i + 1) % 3]});
+  EXPECT_EQ(defect_of(m, &domain), "none");
+  MeshData nested = m;  // inside part 0 (0, p0, p1): the triangle (0, (3 p0 + p1) / 8, (p0 + 3 p1) / 8)
+  const io::Index first = append_between(nested, 1, 2);
+  nested.triangles.insert(nested.triangles.end(), {0, first, first + 1});
+  ASSERT_TRUE(testing::all_elements_positive(nested));
+  EXPECT_EQ(defect_of(nested), "non_manifold_boundary");
+}
+
+// k tetrahedra in every other wedge around one edge: the edge in 2k boundary triangles, paired
+// by one sort around it. A tetrahedron nested in one of them on the same edge is refused.
+TEST(WorstCaseShapes, OpenBookAroundAnEdge) {
+  const MeshData m = fuzz::open_book_3d(300);
+  ASSERT_TRUE(testing::all_elements_positive(m));
+  const Report r = check_mesh(m);
+  EXPECT_TRUE(r.valid) << r.finding.message;
+  EXPECT_EQ(r.statistics.boundary_facets, 1200u);
+  EXPECT_EQ(r.statistics.boundary_components, 1u) << "paired across the empty wedges: one surface";
+  MeshData nested = m;  // (S, (3 r0 + r1) / 8, (r0 + 3 r1) / 8, N): strictly inside page 0 (S, r0, r1, N)
+  const io::Index first = append_between(nested, 2, 3);
+  nested.tetrahedra.insert(nested.tetrahedra.end(), {0, first, first + 1, 1});
+  ASSERT_TRUE(testing::all_elements_positive(nested));
+  EXPECT_EQ(defect_of(nested), "non_manifold_boundary");
+}
+
 }  // namespace
 }  // namespace certimesh::certificate::test

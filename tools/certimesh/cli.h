@@ -4,6 +4,7 @@
 
 #include "certimesh/certificate/check_mesh.h"
 
+#include <cstdint>
 #include <string>
 #include <string_view>
 
@@ -65,13 +66,16 @@ struct MeshOptions {
   bool delaunay = false;     // --algorithm delaunay (default: front)
   bool improve = true;       // --no-improve turns the local-modification stage off
   bool quiet = false;        // --quiet: no progress, summary only
+  double min_angle = 0.0;    // --min-angle A (degrees); 0: no angle guarantee
+  std::uint64_t max_steiner = 4'000'000;  // --max-steiner N: the cap of the --min-angle refinement
   bool convex_hull = false;  // --convex-hull: the convex hull of the points as outer boundary (Triangle's -c)
 };
 
 /// `certimesh mesh DOMAIN -o OUT ...`: meshes DOMAIN, certifies the mesh with the independent
 /// checker and writes it (and the certificate and picture when asked) only if it is valid.
 /// Returns 0 written, 1 invalid domain (every problem named), 2 unreadable input or bad
-/// option, 3 internal error (a mesh that fails its certificate; nothing written).
+/// option, 3 internal error (a mesh that fails its certificate; nothing written), 4 written
+/// but --min-angle not met (the Steiner cap stopped the refinement; the triangles are counted).
 int run_mesh(const MeshOptions& options);
 
 /// `certimesh domain SCRIPT -o OUT.poly`: constructive geometry of planar domains

@@ -34,7 +34,7 @@ constexpr const char* kHelp =
     "                       closed surface mesh in 3D) also that MESH tiles exactly DOMAIN\n"
     "  mesh DOMAIN -o OUT [--size H] [--gamma G] [--algorithm front|delaunay]\n"
     "       [--certificate C.json] [--svg PICTURE.svg] [--save-domain D.poly]\n"
-    "       [--no-improve] [--quiet] [--convex-hull]\n"
+    "       [--no-improve] [--min-angle A] [--max-steiner N] [--quiet] [--convex-hull]\n"
     "                       mesh a 2D domain (.poly, or builtin:plate, builtin:square,\n"
     "                       builtin:two-holes) with triangles; the mesh is certified against\n"
     "                       the domain before anything is written (OUT: .mesh .msh .vtu .node)\n"
@@ -64,7 +64,8 @@ constexpr const char* kHelp =
     "\n"
     "exit status: 0 success; 1 some input line was rejected (predicates), the demo found a\n"
     "disagreement, check found the mesh invalid, or mesh found the domain invalid; 2 usage\n"
-    "error or unreadable input; 3 internal error (a generated mesh failed its certificate).\n";
+    "error or unreadable input; 3 internal error (a generated mesh failed its certificate);\n"
+    "4 mesh written but --min-angle not met (counted on standard error).\n";
 
 int usage_error(const char* fmt, const char* arg) {
   std::fputs("error: ", stderr);
@@ -106,6 +107,14 @@ int parse_and_run_mesh(int argc, char** argv) {
       options.svg = argv[++i];
     } else if (arg == "--save-domain" && has_value) {
       options.save_domain = argv[++i];
+    } else if (arg == "--min-angle" && has_value) {
+      const auto a = positive_number(argv[++i]);
+      if (!a || *a >= 60.0) return usage_error("mesh: --min-angle needs degrees in (0, 60), got '%s'", argv[i]);
+      options.min_angle = *a;
+    } else if (arg == "--max-steiner" && has_value) {
+      const auto n = positive_number(argv[++i]);
+      if (!n || *n != std::floor(*n) || *n > 4e9) return usage_error("mesh: --max-steiner needs a whole number in [1, 4e9], got '%s'", argv[i]);
+      options.max_steiner = static_cast<std::uint64_t>(*n);
     } else if (arg == "--no-improve") {
       options.improve = false;
     } else if (arg == "--quiet") {

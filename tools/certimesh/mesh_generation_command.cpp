@@ -93,6 +93,16 @@ void print_summary(const generators::MeshDomainStats2& s, const certificate::Rep
                 static_cast<unsigned long long>(s.improvement_iterations),
                 static_cast<unsigned long long>(s.improvement_operations));
   }
+  if (s.quality_refined) {
+    const generators::QualityRefinementStats& q = s.quality;
+    std::printf("min-angle refinement: %llu Steiner points (%llu on segments); smallest angle %.2f degrees",
+                static_cast<unsigned long long>(q.inserted), static_cast<unsigned long long>(q.segment_splits),
+                q.smallest_angle);
+    if (q.exempt > 0)
+      std::printf(", %llu triangles exempt (small input angle, down to %.2f degrees)",
+                  static_cast<unsigned long long>(q.exempt), q.smallest_exempt_angle);
+    std::printf("\n");
+  }
   double total = 0.0;
   for (const auto& t : s.timings) total += t.seconds;
   std::printf("time: %.3f s (", total);
@@ -185,10 +195,19 @@ int run_mesh(const MeshOptions& options) {
   mesh_options.size.uniform_size = options.size;
   mesh_options.size.growth = options.gamma;
   mesh_options.improve = options.improve;
+  mesh_options.min_angle = options.min_angle;
+  mesh_options.max_steiner = options.max_steiner;
   try {
     if (options.domain.rfind(kBuiltinPrefix, 0) != 0) {
       const io::MeshData input = io::read_mesh(options.domain);
-      if (is_point_set(input)) return mesh_point_set(options, input);
+      if (is_point_set(input)) {
+        if (options.min_angle > 0.0) {  // not silently ignored: the point set's triangulation is fixed
+          std::fprintf(stderr, "error: %s: --min-angle needs a domain with segments (.poly); a point set is meshed as its Delaunay triangulation only\n",
+                       options.domain.c_str());
+          return 2;
+        }
+        return mesh_point_set(options, input);
+      }
     }
     PlanarDomain domain = load_domain(options.domain);
     if (options.convex_hull) {
@@ -209,6 +228,16 @@ int run_mesh(const MeshOptions& options) {
       return 3;
     }
     write_outputs(options, result.mesh, domain_data, report);
+    if (result.stats.quality_refined && result.stats.quality.below_min_angle > 0) {
+      std::fprintf(stderr,
+                   "warning: --min-angle %g not met: %llu triangles below it, not exempt (%s; %llu segment splits "
+                   "refused); the mesh was written\n",
+                   options.min_angle, static_cast<unsigned long long>(result.stats.quality.below_min_angle),
+                   result.stats.quality.cap_reached ? "the Steiner cap --max-steiner was reached"
+                                                    : "no admissible Steiner point was left for them",
+                   static_cast<unsigned long long>(result.stats.quality.refused_splits));
+      return 4;
+    }
     return 0;
   } catch (const generators::InvalidDomain& e) {
     return refuse_domain(options.domain, e);

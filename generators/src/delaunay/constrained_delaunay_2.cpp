@@ -507,6 +507,63 @@ ConstrainedDelaunay2::VertexId ConstrainedDelaunay2::insert_point(const Point2& 
   return v;
 }
 
+void ConstrainedDelaunay2::set_constrained(std::uint32_t h, bool constrained) {
+  for (const std::uint32_t e : {h, adjacent_[h]}) {
+    const auto bit = static_cast<std::uint8_t>(1u << (e % 3));
+    flags_[e / 3] = static_cast<std::uint8_t>(constrained ? flags_[e / 3] | bit : flags_[e / 3] & ~bit);
+  }
+}
+
+// Whether p may be inserted on the side of half-edge h = (u, v) (seen from its triangle's
+// interior) when it splits the constrained edge (u, v): strictly inside that triangle when it
+// is live (the other two edges have p strictly on their inner side, exactly), anywhere when it
+// is a ghost (p beyond a hull edge: the ghost's half-plane holds it), never when it is a flat
+// triangle of a collinear hull piece.
+bool ConstrainedDelaunay2::fits_beside(std::uint32_t h, const Point2& p) const {
+  const TriangleId t = h / 3;
+  if (flags_[t] & ghost_flag) return true;
+  if (!is_live(t)) return false;
+  const std::uint32_t i = h % 3;
+  const Point2 &x = pt(corner_[3 * t + i]), &u = pt(corner_[3 * t + next_local(i)]), &v = pt(corner_[3 * t + prev_local(i)]);
+  return orient_exact(v, x, p) > 0 && orient_exact(x, u, p) > 0;
+}
+
+ConstrainedDelaunay2::VertexId ConstrainedDelaunay2::split_constraint(VertexId public_a, VertexId public_b,
+                                                                      const Point2& p) {
+  if (public_a >= internal_.size() || public_b >= internal_.size() || flags_.empty()) return none;
+  if (!std::isfinite(p.x) || !std::isfinite(p.y) || points_.size() + 1 >= ghost) return none;
+  const VertexId a = internal_[public_a], b = internal_[public_b];
+  const std::uint32_t h = find_half_edge(a, b);  // in the triangle left of a -> b
+  if (h == none || !((flags_[h / 3] >> (h % 3)) & 1u) || p == pt(a) || p == pt(b)) return none;
+  // With (a, b) unconstrained, the cavity of p holds the triangle on p's side of the edge
+  // (p inside it, or beyond the hull edge), or, p on the open edge, every live triangle of the
+  // edge (an open chord is strictly inside the circle): a and b are on the cavity's boundary,
+  // so the star of p has the edges (a, p) and (p, b). Everything else is the ordinary
+  // constrained Delaunay insertion.
+  const int side = orient_exact(pt(a), pt(b), p);
+  if (side == 0 && (!strictly_between(pt(a), pt(b), p) || (!is_live(h / 3) && !is_live(adjacent_[h] / 3)))) return none;
+  if (side > 0 && !fits_beside(h, p)) return none;
+  if (side < 0 && !fits_beside(adjacent_[h], p)) return none;
+  set_constrained(h, false);
+  const auto v = static_cast<VertexId>(points_.size());
+  points_.push_back(p);
+  external_.push_back(v);
+  internal_.push_back(v);
+  vertex_triangle_.push_back(none);
+  insert_vertex(v, side < 0 ? adjacent_[h] / 3 : h / 3, true);  // the walk starts on p's side
+  const std::uint32_t to_a = find_half_edge(v, a), to_b = find_half_edge(v, b);
+  if (to_a == none || to_b == none) throw std::logic_error("delaunay: a split constraint lost its edges");
+  set_constrained(to_a, true);
+  set_constrained(to_b, true);
+  return v;
+}
+
+ConstrainedDelaunay2::TriangleId ConstrainedDelaunay2::triangle_left_of(VertexId public_a, VertexId public_b) const {
+  if (public_a >= internal_.size() || public_b >= internal_.size()) return none;
+  const std::uint32_t h = find_half_edge(internal_[public_a], internal_[public_b]);
+  return h != none && is_live(h / 3) ? h / 3 : none;
+}
+
 std::vector<int> ConstrainedDelaunay2::classify(std::span<const Point2> holes,
                                                 std::span<const RegionSeed> regions) const {
   constexpr int unvisited = -2;

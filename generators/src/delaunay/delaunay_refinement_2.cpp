@@ -5,7 +5,7 @@
 #include <queue>
 #include <tuple>
 
-#include "certimesh/predicates/orient2d.h"
+#include "refinement_geometry.h"
 
 namespace certimesh::generators {
 
@@ -16,30 +16,9 @@ using VertexId = ConstrainedDelaunay2::VertexId;
 constexpr std::uint32_t none = ConstrainedDelaunay2::none;
 constexpr double pi = 3.141592653589793;
 
-int orient(const Point2& a, const Point2& b, const Point2& c) {
-  return predicates::to_int(predicates::orient2d(a, b, c));
-}
-
-double distance(const Point2& a, const Point2& b) { return std::hypot(a.x - b.x, a.y - b.y); }
-
-Point2 circumcentre(const Point2& a, const Point2& b, const Point2& c) {
-  const double bx = b.x - a.x, by = b.y - a.y, cx = c.x - a.x, cy = c.y - a.y;
-  const double d = 2.0 * (bx * cy - by * cx);
-  const double b2 = bx * bx + by * by, c2 = cx * cx + cy * cy;
-  return {a.x + (cy * b2 - by * c2) / d, a.y + (bx * c2 - cx * b2) / d};
-}
-
-struct Corners {
-  std::array<Point2, 3> p;
-  explicit Corners(const ConstrainedDelaunay2& cdt, TriangleId t) {
-    const auto v = cdt.vertices(t);
-    for (int i = 0; i < 3; ++i) p[static_cast<std::size_t>(i)] = cdt.point(v[static_cast<std::size_t>(i)]);
-  }
-  double shortest() const {
-    return std::min({distance(p[0], p[1]), distance(p[1], p[2]), distance(p[2], p[0])});
-  }
-  Point2 centroid() const { return {(p[0].x + p[1].x + p[2].x) / 3.0, (p[0].y + p[1].y + p[2].y) / 3.0}; }
-};
+using detail::circumcentre;
+using detail::Corners;
+using detail::distance;
 
 // The refinement state: the triangulation, its labels, the size and the work queue.
 class Refiner {
@@ -54,30 +33,19 @@ class Refiner {
     stats_.insertion_bound = options_.max_insertions ? options_.max_insertions : packing_bound();
     for (TriangleId t = 0; t < cdt_.triangle_slot_count(); ++t) consider(t);
     while (!queue_.empty()) {
-      const Entry e = queue_.top();
-      queue_.pop();
-      if (!still_there(e)) continue;
+      const TriangleId t = queue_.pop(cdt_);
+      if (t == none) continue;
       if (stats_.inserted >= stats_.insertion_bound) {
         stats_.bound_reached = true;
         break;
       }
-      refine(e.t);
+      refine(t);
       if ((stats_.inserted & 0x3fff) == 0) report(progress, "refinement", stats_.inserted, stats_.insertion_bound);
     }
     return stats_;
   }
 
  private:
-  // Worst first; the sorted vertex ids break ties and identify the triangle when popped.
-  struct Entry {
-    double badness;
-    std::array<VertexId, 3> vertices;
-    TriangleId t;
-    bool operator<(const Entry& o) const {
-      return std::tie(badness, vertices) < std::tie(o.badness, o.vertices);
-    }
-  };
-
   double size_at(const Point2& p) const {
     return options_.size.automatic() ? automatic_size_ : options_.size.at(p);
   }
@@ -131,44 +99,7 @@ class Refiner {
 
   void consider(TriangleId t) {
     const double b = badness(t);
-    if (b <= 0.0) return;
-    auto v = cdt_.vertices(t);
-    std::sort(v.begin(), v.end());
-    queue_.push({b, v, t});
-  }
-
-  bool still_there(const Entry& e) const {
-    if (!cdt_.is_live(e.t)) return false;
-    auto v = cdt_.vertices(e.t);
-    std::sort(v.begin(), v.end());
-    return v == e.vertices;
-  }
-
-  // Walks straight from the centroid of t to c; the triangle holding c, or `none` when the
-  // path meets a constrained edge, a vertex, or the hull (exact signs throughout).
-  TriangleId straight_walk(TriangleId t, const Point2& c) const {
-    const Corners start(cdt_, t);
-    const Point2 g = start.centroid();
-    for (int i = 0; i < 3; ++i)
-      if (orient(start.p[static_cast<std::size_t>(i)], start.p[static_cast<std::size_t>((i + 1) % 3)], g) <= 0) return none;
-    for (std::size_t step = 0; step < 4 * cdt_.triangle_slot_count() + 16; ++step) {
-      const Corners here(cdt_, t);
-      int exit = -1;
-      bool beyond = false;
-      for (int i = 0; i < 3 && exit < 0; ++i) {
-        const Point2 &a = here.p[static_cast<std::size_t>((i + 1) % 3)], &b = here.p[static_cast<std::size_t>((i + 2) % 3)];
-        if (orient(a, b, c) >= 0) continue;
-        beyond = true;
-        const int oa = orient(g, c, a), ob = orient(g, c, b);
-        if (oa == 0 || ob == 0) return none;
-        if (oa != ob) exit = i;
-      }
-      if (exit < 0) return beyond ? none : t;
-      if (cdt_.is_constrained(t, exit)) return none;
-      t = cdt_.neighbour(t, exit);
-      if (t == none) return none;
-    }
-    return none;
+    if (b > 0.0) queue_.push(cdt_, t, b);
   }
 
   bool far_enough(const Point2& q, TriangleId around, double h) const {
@@ -184,7 +115,7 @@ class Refiner {
     const double h = size_at(c.centroid());
     const bool too_big = h > 0.0 && longest_side(c.p[0], c.p[1], c.p[2]) > h;
     const Point2 centre = circumcentre(c.p[0], c.p[1], c.p[2]);
-    const TriangleId holder = std::isfinite(centre.x) && std::isfinite(centre.y) ? straight_walk(t, centre) : none;
+    const TriangleId holder = std::isfinite(centre.x) && std::isfinite(centre.y) ? detail::straight_walk(cdt_, t, centre).holder : none;
     if (holder != none && labels_[holder] == label && far_enough(centre, holder, size_at(centre))) {
       if (insert(centre, holder, label)) {
         ++stats_.circumcentres;
@@ -238,7 +169,7 @@ class Refiner {
   std::vector<int>& labels_;
   const DelaunayRefinementOptions& options_;
   double automatic_size_ = 0.0;
-  std::priority_queue<Entry> queue_;
+  detail::WorstFirstQueue queue_;
   DelaunayRefinementStats stats_;
 };
 

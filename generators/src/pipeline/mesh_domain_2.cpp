@@ -79,6 +79,7 @@ struct Generated {
   Triangles triangles;
   std::vector<io::Label> labels;  // internal: the region's 1-based index, 0 for no region
   std::uint64_t completed_by_delaunay = 0;
+  std::vector<DomainSegment> subsegments;  // empty: the discretized boundary's, unchanged
 };
 
 // Inside the pipeline a triangle's label is its region's 1-based index (0: no seed), so that
@@ -102,7 +103,7 @@ Generated advancing_front_stage(const detail::DomainTriangulation& dt, const det
   front_options.max_global_retries = kMaxGlobalRetries;
   AdvancingFrontResult front = advance_front_2(boundary.points, dt.front, front_options, progress);
   clock.lap("advancing front");
-  Generated out{std::move(front.points), std::move(front.triangles), {}, 0};
+  Generated out{std::move(front.points), std::move(front.triangles), {}, 0, {}};
   if (!front.remaining_front.empty()) {
     report(progress, "completion", 0, front.remaining_front.size());
     const Triangles rest = detail::complete_by_delaunay(out.points, front.remaining_front);
@@ -153,11 +154,34 @@ void improvement_stage(Generated& g, const detail::DiscretizedBoundary& boundary
   g.labels = std::move(soup.labels);
 }
 
+// Stage 6: the constrained Delaunay triangulation of the vertices the mesh has so far (none
+// after --algorithm delaunay: then it is the whole Delaunay path, the size included), refined
+// to the smallest angle. The generated triangles are replaced: the earlier stages only chose
+// where the vertices go.
+void quality_stage(const PlanarDomain& domain, const detail::DiscretizedBoundary& boundary,
+                   const MeshDomainOptions2& options, const ProgressCallback& progress, Generated& g,
+                   MeshDomainStats2& stats) {
+  std::vector<std::uint8_t> used(g.points.size(), 0);
+  for (const auto& t : g.triangles)
+    for (const std::uint32_t v : t) used[v] = 1;
+  std::vector<Point2> interior;
+  for (std::size_t v = boundary.points.size(); v < g.points.size(); ++v)
+    if (used[v]) interior.push_back(g.points[v]);
+  const SizePolicy size = g.triangles.empty() ? options.size : SizePolicy{};  // the front met the size
+  detail::RefinedTriangulation refined = detail::refine_domain_quality(
+      domain, boundary, interior, size, options.min_angle, options.max_steiner, progress);
+  stats.quality_refined = true;
+  stats.quality = refined.quality;
+  g = Generated{std::move(refined.points), std::move(refined.triangles), std::move(refined.labels),
+                g.completed_by_delaunay, std::move(refined.subsegments)};
+}
+
 // The output: used vertices only, renumbered in first-use order of their ids (deterministic);
 // the domain's point markers on its vertices, a segment's marker on the Steiner points of its
 // subsegments (as Triangle does); region labels, and real attributes when some region's
 // attribute is not an integer.
 io::MeshData to_output(const Generated& g, const detail::DiscretizedBoundary& boundary, const PlanarDomain& domain) {
+  const std::vector<DomainSegment>& subsegments = g.subsegments.empty() ? boundary.subsegments : g.subsegments;
   constexpr std::uint32_t unused = UINT32_MAX;
   std::vector<std::uint32_t> new_id(g.points.size(), unused);
   for (std::uint32_t v = 0; v < boundary.points.size(); ++v) new_id[v] = v;  // boundary first, as given
@@ -189,7 +213,7 @@ io::MeshData to_output(const Generated& g, const detail::DiscretizedBoundary& bo
   }
   if (real) out.triangle_labels = io::labels_of_attributes(out.triangle_attributes);  // as the .ele reader makes them
   out.point_labels.assign(next, 0);
-  for (const DomainSegment& s : boundary.subsegments) {
+  for (const DomainSegment& s : subsegments) {
     out.segments.push_back(new_id[s.a]);
     out.segments.push_back(new_id[s.b]);
     out.segment_labels.push_back(s.label);
@@ -242,24 +266,34 @@ MeshDomainResult2 mesh_domain_2(const PlanarDomain& input, const MeshDomainOptio
   result.stats.boundary_vertices = boundary.points.size() - c.isolated.size();
   clock.lap("boundary");
   Generated generated;
+  const bool quality = options.min_angle > 0.0;
+  const bool has_max_area = std::any_of(max_area.begin(), max_area.end(), [](double a) { return a > 0; });
   if (options.algorithm == MeshAlgorithm2::advancing_front) {
     generated = advancing_front_stage(detail::front_of(c, boundary), boundary, c, sized, progress, clock);
-  } else {
+  } else if (!quality || has_max_area) {  // with maximum areas the vertices follow the sizes first
     const detail::RefinedTriangulation refined = detail::refine_domain(domain, boundary, sized.size, progress);
-    generated = Generated{refined.points, refined.triangles, refined.labels, 0};
+    generated = Generated{refined.points, refined.triangles, refined.labels, 0, {}};
     clock.lap("delaunay refinement");
   }
-  if (options.improve) {
+  if (options.improve && !generated.triangles.empty()) {
     improvement_stage(generated, boundary, c.isolated, options, progress, result.stats);
     clock.lap("improvement");
   }
-  if (std::any_of(max_area.begin(), max_area.end(), [](double a) { return a > 0; })) {
+  // The maximum areas, by bisection of the mesh. With a minimum angle the quality refinement
+  // re-triangulates the vertices instead (from the discretized boundary, which the bisection
+  // would change under it): the areas are aimed at (the vertices follow the sized policy) but
+  // not promised (the angle guarantee comes last).
+  if (has_max_area && !quality) {
     detail::TriangleSoup soup{std::move(generated.points), std::move(generated.triangles), std::move(generated.labels)};
     result.stats.area_bisections = detail::enforce_max_areas(soup, boundary, domain, max_area);
     generated.points = std::move(soup.points);
     generated.triangles = std::move(soup.triangles);
     generated.labels = std::move(soup.labels);
     clock.lap("maximum areas");
+  }
+  if (quality) {
+    quality_stage(domain, boundary, sized, progress, generated, result.stats);
+    clock.lap("quality refinement");
   }
   PlanarDomain labelled = domain;  // the seeds' own labels for the output
   labelled.regions = input.regions;

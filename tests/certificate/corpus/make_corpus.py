@@ -223,12 +223,24 @@ def main():
     case("inverted_element_2d.mesh", None, 1, "inverted_element", 2)
     write_medit("inverted_element_3d.mesh", tet2, [(0, 2, 1, 3), (0, 1, 2, 4)])
     case("inverted_element_3d.mesh", None, 1, "inverted_element", 2)
-    # Two triangles (tetrahedra) sharing only a vertex.
-    write_medit("non_manifold_boundary_2d.mesh", [(0, 0), (1, 0), (0, 1), (-1, 0), (0, -1)], [(0, 1, 2), (0, 3, 4)])
-    case("non_manifold_boundary_2d.mesh", None, 1, "non_manifold_boundary", 2)
-    write_medit("non_manifold_boundary_3d.mesh",
+    # Two triangles (tetrahedra) sharing only a vertex: a pinch, valid (design decision 8), alone
+    # and against the domain of the two triangles (segments sharing the vertex).
+    write_medit("pinch_vertex_2d.mesh", [(0, 0), (1, 0), (0, 1), (-1, 0), (0, -1)], [(0, 1, 2), (0, 3, 4)])
+    case("pinch_vertex_2d.mesh", None, 0, "none", 2)
+    write_poly("pinch_vertex.poly", [(0, 0), (1, 0), (0, 1), (-1, 0), (0, -1)], [(0, 1), (1, 2), (2, 0), (0, 3), (3, 4), (4, 0)])
+    case("pinch_vertex_2d.mesh", "pinch_vertex.poly", 0, "none", 2)
+    write_medit("pinch_vertex_3d.mesh",
                 [(0, 0, 0), (1, 0, 0), (0, 1, 0), (0, 0, 1), (-1, 0, 0), (0, -1, 0), (0, 0, -1)],
                 [(0, 1, 2, 3), (0, 5, 4, 6)])
+    case("pinch_vertex_3d.mesh", None, 0, "none", 2)
+    # A triangle inside another sharing a corner (the boundary edges there leave, leave, enter,
+    # enter), and a tetrahedron inside another sharing an edge (the four boundary triangles
+    # around it do not alternate): the elements cover a region twice.
+    write_medit("non_manifold_boundary_2d.mesh", [(0, 0), (4, 0), (0, 4), (2, 1), (1, 2)], [(0, 1, 2), (0, 3, 4)])
+    case("non_manifold_boundary_2d.mesh", None, 1, "non_manifold_boundary", 2)
+    write_medit("non_manifold_boundary_3d.mesh",
+                [(0, 0, 0), (4, 0, 0), (0, 4, 0), (0, 0, 4), (1, 1, 0.5), (1, 0.5, 1)],
+                [(0, 1, 2, 3), (0, 1, 4, 5)])
     case("non_manifold_boundary_3d.mesh", None, 1, "non_manifold_boundary", 2)
     # T-junction: in the 4x4 grid, the edge (1,1)-(2,1) is split at (1.5,1) in the triangle above
     # it only; all its vertices are interior, so the boundary stays a manifold.
@@ -261,11 +273,12 @@ def main():
     case("t_junction_3d.mesh", None, 1, "t_junction", 386)
     # The classic T-junction between two squares glued along x = 1, the right one split at
     # (1, 0.5): the junction's facet ends on the outer boundary, so the boundary passes twice
-    # through (1,0) and (1,1) -- non_manifold_boundary comes first (README).
+    # through (1,0) and (1,1), with two boundary edges leaving (1,0) upward along x = 1: the
+    # vertex (1, 0.5) lies on the boundary edge (1,0)-(1,1) (README).
     write_medit("t_junction_on_boundary_2d.mesh",
                 [(0, 0), (1, 0), (1, 1), (0, 1), (2, 0), (2, 1), (1, 0.5)],
                 [(0, 1, 2), (0, 2, 3), (1, 4, 6), (6, 4, 5), (6, 5, 2)])
-    case("t_junction_on_boundary_2d.mesh", None, 1, "non_manifold_boundary", 5)
+    case("t_junction_on_boundary_2d.mesh", None, 1, "t_junction", 5)
     # Branched double cover: 7 triangles (tetrahedra) around a centre (axis), ring winding twice.
     ring = [(round(1000 * math.cos(4 * math.pi * k / 7)), round(1000 * math.sin(4 * math.pi * k / 7))) for k in range(7)]
     write_medit("boundary_intersection_2d.mesh", ring + [(0, 0)], [(7, k, (k + 1) % 7) for k in range(7)])

@@ -24,7 +24,9 @@ enum class Defect {
   // geometric, exact
   flat_element,                // zero area / volume
   inverted_element,            // negative area / volume (consistently listed, but turned over)
-  non_manifold_boundary,       // boundary not a manifold at a vertex or edge (pinch, fin)
+  non_manifold_boundary,       // the boundary facets around a vertex (2D) or edge (3D) do not
+                               // alternate in orientation (a fin, a sheet inside another there);
+                               // pinches that alternate are valid (design decision 8)
   t_junction,                  // a vertex lies inside a boundary facet it is not a vertex of
   boundary_intersection,       // two boundary facets meet other than in a shared vertex/edge
   multiple_cover,              // some region is covered more than once (winding number >= 2)

@@ -8,7 +8,12 @@
 //   4. the elements: advancing front (with Delaunay completion of whatever it leaves) or
 //      Delaunay refinement;
 //   5. quality improvement by local modifications, boundary trace kept;
-//   6. the regions' maximum areas enforced by longest-edge bisection.
+//   6. the regions' maximum areas enforced by longest-edge bisection (with 7 instead, aimed at by
+//      the size only);
+//   7. with a minimum angle: the constrained Delaunay triangulation of the mesh's vertices,
+//      refined until every triangle meets the angle or is exempt (quality_refinement_2.h).
+//      It runs last, so nothing after it can lower an angle; after --algorithm delaunay it
+//      replaces stages 4's size-only refinement and 5 (the quality refinement meets the size).
 // Triangle's .poly semantics throughout (planar_domain.h): isolated vertices inside the domain
 // are mesh vertices, segments inside it are mesh edges, segments with the domain on neither
 // side are eaten, a hole point outside every face is refused.
@@ -19,6 +24,7 @@
 #include <string>
 #include <vector>
 
+#include "certimesh/generators/delaunay/quality_refinement_2.h"
 #include "certimesh/generators/domain/planar_domain.h"
 #include "certimesh/generators/progress.h"
 #include "certimesh/generators/size_policy.h"
@@ -33,6 +39,10 @@ struct MeshDomainOptions2 {
   SizePolicy size;
   bool improve = true;           // run the local-modification improvement
   double target_quality = 0.0;   // 0 = 0.93 after the advancing front, 0.9 after Delaunay refinement
+  /// The smallest angle wanted, degrees, in (0, 60); 0 = no guarantee (stage 6 off).
+  double min_angle = 0.0;
+  /// Stage 6's Steiner point cap (quality_refinement_2.h).
+  std::uint64_t max_steiner = 4'000'000;
 };
 
 struct StageTiming {
@@ -54,6 +64,8 @@ struct MeshDomainStats2 {
   std::uint64_t area_bisections = 0;        // splits that enforced the regions' maximum areas
   double worst_quality = 0.0;
   double mean_quality = 0.0;
+  bool quality_refined = false;             // stage 6 ran; then `quality` says how it ended
+  QualityRefinementStats quality;
   std::vector<StageTiming> timings;
 };
 

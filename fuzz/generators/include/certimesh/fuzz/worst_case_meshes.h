@@ -13,6 +13,18 @@
 
 namespace certimesh::fuzz {
 
+namespace detail {
+/// n points on the unit circle, at angles 2 pi i / n, appended to m (with z = 0 in 3D).
+inline void append_circle(io::MeshData& m, int n) {
+  const double pi = std::acos(-1.0);
+  for (int i = 0; i < n; ++i) {
+    m.coordinates.push_back(std::cos(2 * pi * i / n));
+    m.coordinates.push_back(std::sin(2 * pi * i / n));
+    if (m.dimension == 3) m.coordinates.push_back(0);
+  }
+}
+}  // namespace detail
+
 /// A star polygon of 2k sides around the origin (tips at radius 1, notches at radius 1/64),
 /// fan-triangulated from the centre: 2k triangles, 2k boundary edges, most of whose boxes
 /// overlap near the centre. Vertex 0 is the centre; the polygon runs counterclockwise.
@@ -41,12 +53,7 @@ inline io::MeshData book_3d(int k) {
   io::MeshData m;
   m.dimension = 3;
   m.coordinates = {0, 0, -1, 0, 0, 1};
-  const double pi = std::acos(-1.0);
-  for (int i = 0; i < k; ++i) {
-    m.coordinates.push_back(std::cos(2 * pi * i / k));
-    m.coordinates.push_back(std::sin(2 * pi * i / k));
-    m.coordinates.push_back(0);
-  }
+  detail::append_circle(m, k);
   for (int i = 0; i < k; ++i) {  // (S, N, r_i, r_i+1): positive for counterclockwise r
     const auto a = static_cast<io::Index>(2 + i), b = static_cast<io::Index>(2 + (i + 1) % k);
     for (io::Index v : {io::Index{0}, a, b, io::Index{1}}) m.tetrahedra.push_back(v);
@@ -98,6 +105,33 @@ inline io::MeshData nested_rings_2d(int k) {
       const io::Index a = first + i, b = first + (i + 1) % 4, c = first + 4 + i, d = first + 4 + (i + 1) % 4;
       m.triangles.insert(m.triangles.end(), {a, c, d, a, d, b});
     }
+  }
+  return m;
+}
+
+/// k triangles around the origin in every other wedge of angle pi/k (tips on the unit circle):
+/// k parts pinched at one vertex (design decision 8), which is in 2k boundary edges; pairing
+/// them must cost k log k (an angular sort), not k^2.
+inline io::MeshData pinwheel_2d(int k) {
+  io::MeshData m;
+  m.dimension = 2;
+  m.coordinates = {0.0, 0.0};
+  detail::append_circle(m, 2 * k);
+  for (int i = 0; i < k; ++i)
+    m.triangles.insert(m.triangles.end(), {io::Index{0}, static_cast<io::Index>(1 + 2 * i), static_cast<io::Index>(2 + 2 * i)});
+  return m;
+}
+
+/// book_3d with every other page left out: k tetrahedra around the edge S N in every other
+/// wedge of 2k, so the edge is in 2k boundary triangles, paired by their order around it.
+inline io::MeshData open_book_3d(int k) {
+  io::MeshData m;
+  m.dimension = 3;
+  m.coordinates = {0, 0, -1, 0, 0, 1};
+  detail::append_circle(m, 2 * k);
+  for (int i = 0; i < k; ++i) {
+    const auto a = static_cast<io::Index>(2 + 2 * i), b = static_cast<io::Index>(3 + 2 * i);
+    for (io::Index v : {io::Index{0}, a, b, io::Index{1}}) m.tetrahedra.push_back(v);
   }
   return m;
 }

@@ -62,6 +62,17 @@ class ConstrainedDelaunay2 {
   /// up point location.
   VertexId insert_point(const Point2& p, TriangleId hint = none);
 
+  /// Splits the constrained edge (a, b) at p, which need not lie exactly on it (a Steiner
+  /// point on a segment is the rounding of an exact point of it, design decision 2): p must
+  /// lie on the open edge or strictly inside the triangle (or beyond the hull edge) on its
+  /// side. Then (a, p) and (p, b) become constrained edges in place of (a, b) and the
+  /// triangulation stays constrained Delaunay. Returns `none` and changes nothing when (a, b)
+  /// is not a constrained edge or p does not fit that way.
+  VertexId split_constraint(VertexId a, VertexId b, const Point2& p);
+
+  /// The live triangle that has the directed edge a -> b counterclockwise, or `none`.
+  TriangleId triangle_left_of(VertexId a, VertexId b) const;
+
   std::size_t vertex_count() const noexcept { return points_.size(); }
   const Point2& point(VertexId v) const { return points_[internal_[v]]; }
 
@@ -123,6 +134,8 @@ class ConstrainedDelaunay2 {
   TriangleId new_slot();
   void link(std::uint32_t half_edge_a, std::uint32_t half_edge_b);
   std::uint32_t find_half_edge(VertexId u, VertexId v) const;
+  void set_constrained(std::uint32_t half_edge, bool constrained);
+  bool fits_beside(std::uint32_t half_edge, const Point2& p) const;
   void flip(std::uint32_t half_edge);
   void restore_delaunay(std::vector<std::array<VertexId, 2>> edges);
   std::vector<std::array<VertexId, 2>> crossing_edges(VertexId a, VertexId b) const;
