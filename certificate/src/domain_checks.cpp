@@ -16,6 +16,7 @@
 #include "certimesh/predicates/orient2d.h"
 #include "certimesh/predicates/orient3d.h"
 #include "close_pairs.h"
+#include "domain_faces.h"
 #include "facet_domain_3.h"
 #include "on_simplex.h"
 #include "rational.h"
@@ -47,6 +48,9 @@ struct Domain {
   std::uint32_t face_of(std::size_t t) const { return polygonal ? polygons.facet_of[t] : static_cast<std::uint32_t>(t); }
   std::size_t face_count() const { return polygonal ? polygons.boundary.size() : facets.size(); }
   std::size_t plane(std::size_t face) const { return polygonal ? plane_of[face] : face; }
+  // 2D (domain_faces.h): the segments with a domain face on a side; the others (eaten by a
+  // hole, or outside) need no coverage.
+  std::vector<char> needs_cover;
 };
 
 std::vector<Vec> points_of(const MeshView& g, const Index* ids, int count) {
@@ -525,10 +529,12 @@ Finding coverage(const MeshView& m, const FacetSet& b, const Domain& d, const On
     // of its sides void (TetGen removes it: the window of its example.poly).
     if (d.polygonal && (next == on_face.end() || next->first != f) && facet_void_on_both_sides(d.geo, d.facets, d.polygons, static_cast<std::uint32_t>(f), d.holes))
       continue;
+    const bool optional = !d.needs_cover.empty() && !d.needs_cover[f];  // 2D, eaten: covered or not at all
     face_edges(d, f, walked, bounding);
     std::vector<Edge> chain, edges_on_face, odd;
     std::vector<Index> path;
-    for (std::size_t i = 0; i < walked.size(); ++i) {
+    bool complete = true;
+    for (std::size_t i = 0; i < walked.size() && complete; ++i) {
       const auto [from, to] = walked[i];
       const double* a = d.geo.xyz + static_cast<std::size_t>(from) * m.dim;
       const double* z = d.geo.xyz + static_cast<std::size_t>(to) * m.dim;
@@ -538,13 +544,18 @@ Finding coverage(const MeshView& m, const FacetSet& b, const Domain& d, const On
         const double* p = m.xyz + static_cast<std::size_t>(w) * m.dim;
         return lies_exactly_on({a, z, nullptr}, m.dim, p) || (!d.pinned[w] && lies_on({a, z, nullptr}, m.dim, p, d.tolerance));
       };
-      if (!walk(m, edges, d.mesh_vertex_at[from], d.mesh_vertex_at[to], z, on_az, path, seen, ++stamp))
+      complete = walk(m, edges, d.mesh_vertex_at[from], d.mesh_vertex_at[to], z, on_az, path, seen, ++stamp);
+      if (!complete && optional) break;
+      if (!complete)
         return finding(Defect::domain_boundary_not_covered, -1, static_cast<std::int64_t>(f), -1,
                        "domain facet " + std::to_string(f) + ": its edge from domain vertex " + std::to_string(from) + " to " +
                            std::to_string(to) + " is not covered by mesh edges on it");
       for (std::size_t k = 0; bounding[i] && k + 1 < path.size(); ++k) chain.push_back(std::minmax(path[k], path[k + 1]));
     }
     if (m.dim == 2) {
+      // An eaten segment that the mesh covers anyway keeps its chain, so that a mesh reaching
+      // into a hole face is refused where it is plainest (6e: the hole point is covered).
+      if (!complete) continue;
       chains.push_back({static_cast<std::int64_t>(f), std::move(path)});
       continue;
     }
@@ -645,6 +656,22 @@ Finding holes_and_regions_3d(const MeshView& m, const FacetSet& b, const Compone
   return cavities_need_holes(b, comps, has_hole);
 }
 
+// 2D: the faces of the domain (domain_faces.h); every isolated domain vertex inside the domain
+// is a mesh vertex (design decision 8).
+Finding faces_and_isolated_vertices(const MeshView& m, const std::vector<Index>& lex, const io::MeshData& data, Domain& d) {
+  DomainFaces faces;
+  if (Finding f = domain_faces_2d(d.geo, d.facets, data.holes, faces); f.defect != Defect::none) return f;
+  d.needs_cover = std::move(faces.segment_bounds_domain);
+  for (Index v = 0; v < d.geo.vertex_count; ++v) {
+    if (!faces.isolated_in_domain[v] || find_vertex(m, lex, d.geo.xyz + 2 * static_cast<std::size_t>(v)) >= 0) continue;
+    char at[80];
+    std::snprintf(at, sizeof at, "(%.17g, %.17g)", d.geo.coord(v, 0), d.geo.coord(v, 1));
+    return finding(Defect::domain_boundary_not_covered, -1, -1, -1,
+                   "domain vertex " + std::to_string(v) + " " + at + ", on no segment and inside the domain, is not a mesh vertex");
+  }
+  return {};
+}
+
 }  // namespace
 
 Finding check_domain(const MeshView& m, const FacetSet& boundary, const Components& comps,
@@ -654,6 +681,7 @@ Finding check_domain(const MeshView& m, const FacetSet& boundary, const Componen
   d.tolerance = tolerance;
   stats.boundary_tolerance = tolerance;
   Finding f = load_domain(domain, m.dim, d);
+  if (f.defect == Defect::none && m.dim == 2) f = faces_and_isolated_vertices(m, lex_order, domain, d);
   if (f.defect != Defect::none) return f;
   const DomainVertexMatch match = domain_vertices_in_mesh(m, d);
   d.pinned.resize(m.vertex_count);

@@ -92,6 +92,14 @@ inline void check_writable(const MeshData& mesh, const std::string& file) {
   check_finite(mesh.holes, file, "hole coordinate");
   check_finite(mesh.region_points, file, "region coordinate");
   check_finite(mesh.region_attributes, file, "region attribute");
+  check_finite(mesh.triangle_attributes, file, "triangle attribute");
+  if (!mesh.region_max_measures.empty() && mesh.region_max_measures.size() != mesh.region_attributes.size()) {
+    throw FormatError(file, 0, "region points and region maximum areas differ in number");
+  }
+  if (!mesh.triangle_attributes.empty() && mesh.triangle_attributes.size() != mesh.triangle_count()) {
+    throw FormatError(file, 0, std::to_string(mesh.triangle_attributes.size()) + " triangle attributes for " +
+                                   std::to_string(mesh.triangle_count()) + " triangles");
+  }
   const std::size_t n = mesh.point_count();
   if (!mesh.point_labels.empty() && mesh.point_labels.size() != n) {
     throw FormatError(file, 0, std::to_string(mesh.point_labels.size()) + " point labels for " +

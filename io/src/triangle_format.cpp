@@ -88,18 +88,19 @@ Label read_marker(TextReader& in, std::string_view what) {
                                             std::numeric_limits<Label>::max()));
 }
 
-// A regional attribute that becomes an element label: a number with an integer value.
-Label read_attribute_label(TextReader& in) {
-  const double value = in.read_double("regional attribute");
-  if (std::trunc(value) != value || value < std::numeric_limits<Label>::min() ||
-      value > std::numeric_limits<Label>::max()) {
-    std::string shown;
-    append_double(shown, value);
-    in.fail("regional attribute " + shown +
-            " is not an integer label (certimesh keeps the first attribute as the element's "
-            "label)");
-  }
-  return static_cast<Label>(value);
+// Element attributes are labels when every one is an integer in range (the common case, and
+// the reading of a material id); otherwise they are kept as reals (Triangle's regional
+// attributes such as 0.05) and the labels are labels_of_attributes of them.
+bool integral_label(double value) {
+  return std::trunc(value) == value && value >= std::numeric_limits<Label>::min() &&
+         value <= std::numeric_limits<Label>::max();
+}
+
+void attributes_to_labels(std::vector<double>& attributes, std::vector<Label>& labels) {
+  if (!std::all_of(attributes.begin(), attributes.end(), integral_label)) return;
+  labels.reserve(attributes.size());
+  for (const double a : attributes) labels.push_back(static_cast<Label>(a));
+  attributes.clear();
 }
 
 std::size_t read_small_count(TextReader& in, std::string_view what) {
@@ -141,7 +142,7 @@ struct CellSection {
 };
 
 void read_cells(TextReader& in, const CellSection& section, const PointNumbering& points,
-                std::vector<Index>& cells, std::vector<Label>& labels) {
+                std::vector<Index>& cells, std::vector<Label>& labels, std::vector<double>* attributes = nullptr) {
   in.begin_record();
   const auto count = static_cast<std::size_t>(in.read_integer(section.what + " count", 0, kInt64Max));
   std::size_t fields_per_label = 0;
@@ -158,17 +159,30 @@ void read_cells(TextReader& in, const CellSection& section, const PointNumbering
   in.end_record("the " + section.what + " header");
   in.check_count_fits(section.what + " count", count, kMinBytesPerField * (1 + section.corners + fields_per_label));
   cells.reserve(count * section.corners);
+  std::vector<double> real_attributes;
   RecordNumbers numbers(section.what);
   for (std::size_t c = 0; c < count; ++c) {
     in.begin_record();
     numbers.read(in, c);
     for (std::size_t k = 0; k < section.corners; ++k) cells.push_back(read_vertex(in, points, "vertex"));
-    if (fields_per_label > 0) {
-      labels.push_back(section.label_is_attribute ? read_attribute_label(in)
-                                                  : read_marker(in, "boundary marker"));
+    if (fields_per_label > 0 && section.label_is_attribute) {
+      real_attributes.push_back(in.read_double("regional attribute"));
+      if (attributes == nullptr && !integral_label(real_attributes.back())) {
+        std::string shown;
+        append_double(shown, real_attributes.back());
+        in.fail("regional attribute " + shown + " of a " + section.what +
+                " is not an integer label (only 2D triangles keep real attributes)");
+      }
       for (std::size_t a = 1; a < fields_per_label; ++a) in.read_double("regional attribute");
+    } else if (fields_per_label > 0) {
+      labels.push_back(read_marker(in, "boundary marker"));
     }
     in.end_record("the " + section.what);
+  }
+  attributes_to_labels(real_attributes, labels);
+  if (!real_attributes.empty()) {  // labels too, for the formats that keep only integers
+    labels = labels_of_attributes(real_attributes);
+    *attributes = std::move(real_attributes);
   }
   detail::drop_all_zero(labels);
 }
@@ -345,7 +359,7 @@ MeshData parse_mesh_files(TextReader& main_in, const fs::path& main, const Compa
     if (three_d) {
       read_cells(*ele, {"tetrahedron", 4, true}, points, mesh.tetrahedra, mesh.tetrahedron_labels);
     } else {
-      read_cells(*ele, {"triangle", 3, true}, points, mesh.triangles, mesh.triangle_labels);
+      read_cells(*ele, {"triangle", 3, true}, points, mesh.triangles, mesh.triangle_labels, &mesh.triangle_attributes);
     }
     expect_end(*ele);
   }
@@ -530,9 +544,23 @@ std::string format_ele(const MeshData& mesh) {
   const auto& cells = three_d ? mesh.tetrahedra : mesh.triangles;
   const auto& labels = three_d ? mesh.tetrahedron_labels : mesh.triangle_labels;
   const std::size_t corners = three_d ? 4 : 3;
+  const bool real = !three_d && !mesh.triangle_attributes.empty();
   std::string out = std::to_string(cells.size() / corners) + " " + std::to_string(corners) +
-                    (labels.empty() ? " 0\n" : " 1\n");
-  append_cell_records(out, cells, labels, corners);
+                    (labels.empty() && !real ? " 0\n" : " 1\n");
+  if (!real) {
+    append_cell_records(out, cells, labels, corners);
+    return out;
+  }
+  for (std::size_t c = 0; c < cells.size() / corners; ++c) {  // Triangle's real element attribute
+    detail::append_integer(out, c + 1);
+    for (std::size_t k = 0; k < corners; ++k) {
+      out += ' ';
+      detail::append_integer(out, std::uint64_t{cells[c * corners + k]} + 1);
+    }
+    out += ' ';
+    append_double(out, mesh.triangle_attributes[c]);
+    out += '\n';
+  }
   return out;
 }
 

@@ -74,7 +74,15 @@ bool oracle_valid(const PlanarDomain& d) {
     if (s.a >= d.points.size() || s.b >= d.points.size() || s.a == s.b) return false;
     used[s.a] = used[s.b] = true;
   }
-  if (std::find(used.begin(), used.end(), false) != used.end()) return false;
+  // A vertex on no segment is valid (design decision 8) unless it lies on a segment (distinct
+  // points, so inside it: a T-junction).
+  for (std::size_t v = 0; v < d.points.size(); ++v) {
+    if (used[v]) continue;
+    for (const DomainSegment& s : d.segments) {
+      if (orient(d.points[s.a], d.points[s.b], d.points[v]) == 0 && in_closed_box(d.points[v], d.points[s.a], d.points[s.b]))
+        return false;
+    }
+  }
   for (std::size_t i = 0; i < d.segments.size(); ++i) {
     for (std::size_t j = i + 1; j < d.segments.size(); ++j) {
       const DomainSegment &s = d.segments[i], &t = d.segments[j];
@@ -254,13 +262,28 @@ TEST(dom_DomainValidation, IndexOutOfRangeAndIsolatedVertex) {
   const DomainProblem range = only_problem_of(problems, DomainProblemKind::vertex_index_out_of_range);
   EXPECT_EQ(range.segments, (std::vector<std::uint32_t>{3}));
   EXPECT_EQ(range.vertices, (std::vector<std::uint32_t>{9}));
-  const DomainProblem isolated = only_problem_of(problems, DomainProblemKind::isolated_vertex);
-  EXPECT_EQ(isolated.message, "vertex 3 (5 5) is on no segment");
+  // A vertex on no segment is a point the user wants in the mesh (design decision 8).
+  EXPECT_EQ(problems.size(), 1u);
+}
+
+TEST(dom_DomainValidation, IsolatedVertexInsideASegmentIsAJunction) {
+  PlanarDomain d = polygon({{0, 0}, {2, 0}, {0, 2}});
+  d.points.push_back({1, 1});      // inside the hypotenuse, exactly
+  d.points.push_back({0.5, 0.5});  // inside the triangle: fine
+  const std::vector<DomainProblem> problems = validate_domain(d);
+  ASSERT_EQ(problems.size(), 1u);
+  EXPECT_EQ(problems[0].kind, DomainProblemKind::vertex_on_segment);
+  EXPECT_EQ(problems[0].vertices, (std::vector<std::uint32_t>{3}));
+  EXPECT_EQ(problems[0].segments, (std::vector<std::uint32_t>{1}));
+  EXPECT_NE(problems[0].message.find("vertex 3 (1 1), on no segment, lies inside segment 1"), std::string::npos);
 }
 
 TEST(dom_DomainValidation, CapOnTheNumberOfProblems) {
   PlanarDomain d = polygon({{0, 0}, {1, 0}, {0, 1}});
-  for (int i = 0; i < 50; ++i) d.points.push_back({10.0 + i, 0});
+  for (std::uint32_t i = 0; i < 50; ++i) {
+    d.points.push_back({10.0 + i, 0});
+    d.segments.push_back({3 + i, 3 + i, 0});  // zero length, one problem each
+  }
   EXPECT_EQ(validate_domain(d, 16).size(), 16u);
   EXPECT_EQ(validate_domain(d, 100).size(), 50u);
 }
@@ -276,7 +299,8 @@ TEST(dom_DomainValidation, InvalidDomainWhatNamesTheFirstProblem) {
 
 TEST(dom_DomainMeshData, PolyFileRoundTripIsExact) {
   PlanarDomain d = plate_with_holes_and_crack();
-  d.regions.push_back({{0.25, 0.25}, 7});
+  d.regions.push_back({{0.25, 0.25}, 7, 7.0});
+  d.regions.push_back({{0.75, 0.25}, 2, 2.0, 0.125});  // a maximum area
   const std::filesystem::path path = std::filesystem::temp_directory_path() / "certimesh_dom_round_trip.poly";
   io::write_mesh(to_mesh_data(d), path);
   const PlanarDomain back = planar_domain_from_mesh_data(io::read_mesh(path));
@@ -314,16 +338,26 @@ TEST(dom_DomainMeshData, StructuralRefusals) {
   }
   m.segments = {0, 1, 1, 2, 2, 0};
   m.region_points = {0.1, 0.1};
-  m.region_attributes = {2.5};
+  m.region_attributes = {std::numeric_limits<double>::infinity()};
   try {
     planar_domain_from_mesh_data(m);
     ADD_FAILURE();
   } catch (const InvalidDomain& e) {
     EXPECT_EQ(e.problems().front().kind, DomainProblemKind::bad_region_attribute);
-    EXPECT_TRUE(e.problems().front().message.find("2.5") != std::string::npos);
+    EXPECT_TRUE(e.problems().front().message.find("inf") != std::string::npos);
   }
   m.region_attributes = {3.0};
   EXPECT_EQ(planar_domain_from_mesh_data(m).regions.front().label, 3);
+  // A real attribute (Triangle's 0.05) is kept; the label is then the region's 1-based index.
+  m.region_points = {0.1, 0.1, 0.2, 0.1};
+  m.region_attributes = {3.0, 0.05};
+  m.region_max_measures = {-1.0, 0.01};
+  const PlanarDomain real = planar_domain_from_mesh_data(m);
+  EXPECT_EQ(real.regions[0].label, 1);
+  EXPECT_EQ(real.regions[1].label, 2);
+  EXPECT_EQ(real.regions[1].attribute, 0.05);
+  EXPECT_EQ(real.regions[0].max_area, -1.0);
+  EXPECT_EQ(real.regions[1].max_area, 0.01);
 }
 
 // ---- generated domains -----------------------------------------------------------------------
@@ -345,8 +379,10 @@ RC_GTEST_PROP(dom_DomainValidationProperty, OracleAgreesOnSmallGeneratedDomains,
 RC_GTEST_PROP(dom_DomainValidationProperty, GeneratedInvalidDomainsAreRefusedWithTheRightKindAndIds, ()) {
   const fuzz::PlanarDomainCase c = *fuzz::invalid_planar_domain(300);
   const std::vector<DomainProblem> problems = validate_domain(c.domain);
-  if (c.expected == DomainProblemKind::open_boundary) {
-    RC_ASSERT(problems.empty());  // decided by the domain triangulation, not here
+  if (c.expected == DomainProblemKind::open_boundary || c.expected == DomainProblemKind::isolated_vertex) {
+    // An open loop is decided by the domain triangulation, not here; a vertex on no segment
+    // (the mutation puts it outside everything) is valid: the mesher drops it.
+    RC_ASSERT(problems.empty());
     return;
   }
   RC_ASSERT(!problems.empty());

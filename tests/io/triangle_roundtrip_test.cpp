@@ -7,6 +7,8 @@
 #include <algorithm>
 #include <cstdint>
 #include <filesystem>
+#include <fstream>
+#include <iterator>
 #include <vector>
 
 #include "certimesh/io/format_error.h"
@@ -78,6 +80,38 @@ TEST(TriangleRoundTrip, SignedZeroAndExtremesKeepTheirBits) {
   EXPECT_TRUE(std::signbit(back.coordinates[0]));
   EXPECT_FALSE(std::signbit(back.coordinates[1]));
   EXPECT_TRUE(identical(back, mesh));
+}
+
+TEST(TriangleRoundTrip, RealElementAttributesAndRegionAreas) {
+  // Triangle's regional attributes are reals: a 2D .ele keeps them beside empty labels, and
+  // writes them back; a .poly region's maximum area survives the round trip.
+  MeshData mesh;
+  mesh.coordinates = {0, 0, 1, 0, 1, 1, 0, 1};
+  mesh.triangles = {0, 1, 2, 0, 2, 3};
+  mesh.triangle_attributes = {0.05, 2.5};
+  mesh.triangle_labels = {1, 2};  // each distinct attribute's rank, for the integer-only formats
+  const fs::path path = folder() / "real.ele";
+  write_triangle_format(mesh, path);
+  std::ifstream ele(path);
+  const std::string text((std::istreambuf_iterator<char>(ele)), std::istreambuf_iterator<char>());
+  EXPECT_EQ(text, "2 3 1\n1 1 2 3 0.05\n2 1 3 4 2.5\n");  // Triangle's layout, by hand
+  EXPECT_TRUE(identical(read_triangle_format(path), mesh));
+  mesh.triangle_attributes = {3.0, -2.0};  // integers: labels, as before
+  mesh.triangle_labels.clear();
+  write_triangle_format(mesh, path);
+  MeshData labelled = mesh;
+  labelled.triangle_attributes.clear();
+  labelled.triangle_labels = {3, -2};
+  EXPECT_EQ(read_triangle_format(path), labelled);
+  MeshData domain;
+  domain.coordinates = {0, 0, 1, 0, 0, 1};
+  domain.segments = {0, 1, 1, 2, 2, 0};
+  domain.region_points = {0.25, 0.25, 0.5, 0.125};
+  domain.region_attributes = {0.05, 7};
+  domain.region_max_measures = {0.01, -1};
+  const fs::path poly = folder() / "areas.poly";
+  write_mesh(domain, poly);
+  EXPECT_EQ(read_mesh(poly), domain);
 }
 
 TEST(TriangleRead, ZeroBasedSquareWithAttributesMarkersAndEdges) {

@@ -26,7 +26,14 @@ std::string mesh_help() {
          "\n"
          "  DOMAIN               a .poly file, or builtin:plate, builtin:square, builtin:two-holes;\n"
          "                       a .node file of 2D points (no segments) is meshed as the\n"
-         "                       Delaunay triangulation of its convex hull, every point a vertex\n"
+         "                       Delaunay triangulation of its convex hull, every point a vertex.\n"
+         "                       A .poly is read as Triangle reads it: vertices on no segment\n"
+         "                       are mesh vertices (dropped when outside the domain), segments\n"
+         "                       inside the domain are mesh edges, segments with the domain on\n"
+         "                       neither side are eaten by the holes, regional attributes are\n"
+         "                       real numbers and a region's maximum area is a bound on every\n"
+         "                       triangle in it, markers become labels; a hole point outside\n"
+         "                       every face is refused\n"
          "  -o, --output OUT     the mesh (required); format by extension: " +
          std::string(kMeshOutputExtensions) +
          "\n"
@@ -80,6 +87,10 @@ std::string mesh_help() {
          "                       (exit status 4) (default: " +
          std::to_string(d.max_steiner) +
          ")\n"
+         "  --convex-hull        add the convex hull of all the points as outer boundary, as\n"
+         "                       Triangle's -c (default: " +
+         (d.convex_hull ? "on" : "off") +
+         "); --save-domain then writes that domain\n"
          "  --quiet              no progress on a terminal, only the summary (default: " +
          (d.quiet ? "on" : "off") +
          ")\n"

@@ -139,6 +139,8 @@ int run_check(const CheckOptions& options) {
     std::printf("invalid: %s: %s\n",
                 std::string(certificate::defect_name(report.finding.defect)).c_str(),
                 report.finding.message.c_str());
+    if (report.finding.defect == certificate::Defect::invalid_domain)  // the user's input, not the mesh
+      std::fprintf(stderr, "error: %s: %s\n", options.domain.c_str(), report.finding.message.c_str());
   }
   if (!options.certificate.empty()) {
     try {

@@ -16,6 +16,7 @@
 #include "certimesh/certificate/check_mesh.h"
 #include "certimesh/generators/delaunay/constrained_delaunay_2.h"
 #include "certimesh/generators/delaunay/point_set_2.h"
+#include "certimesh/generators/domain/convex_hull_2.h"
 #include "certimesh/generators/domain/default_domains.h"
 #include "certimesh/generators/domain/domain_problem.h"
 #include "certimesh/generators/domain/domain_validation.h"
@@ -77,6 +78,15 @@ void print_summary(const generators::MeshDomainStats2& s, const certificate::Rep
     std::printf(", %llu of them by the Delaunay completion", static_cast<unsigned long long>(s.completed_by_delaunay));
   }
   std::printf("\nquality 12*sqrt(3)*area/perimeter^2: worst %.4f, mean %.4f\n", s.worst_quality, s.mean_quality);
+  if (s.isolated_vertices + s.dropped_vertices + s.eaten_segments > 0) {
+    std::printf("input: %llu vertices on no segment kept as mesh vertices, %llu vertices outside the domain dropped, "
+                "%llu segments with the domain on neither side eaten\n",
+                static_cast<unsigned long long>(s.isolated_vertices), static_cast<unsigned long long>(s.dropped_vertices),
+                static_cast<unsigned long long>(s.eaten_segments));
+  }
+  if (s.area_bisections > 0) {
+    std::printf("maximum areas: %llu bisections\n", static_cast<unsigned long long>(s.area_bisections));
+  }
   if (s.improved_region > 0) {
     std::printf("improvement: %llu triangles around the worst ones, %llu iterations, %llu local modifications\n",
                 static_cast<unsigned long long>(s.improved_region),
@@ -200,7 +210,12 @@ int run_mesh(const MeshOptions& options) {
         return mesh_point_set(options, input);
       }
     }
-    const PlanarDomain domain = load_domain(options.domain);
+    PlanarDomain domain = load_domain(options.domain);
+    if (options.convex_hull) {
+      std::size_t added = 0;
+      domain = generators::with_convex_hull(domain, &added);
+      if (!options.quiet) std::printf("convex hull: %zu segments added\n", added);
+    }
     const io::MeshData domain_data = generators::to_mesh_data(domain);
     const generators::MeshDomainResult2 result =
         generators::mesh_domain_2(domain, mesh_options, terminal_progress(options.quiet));
@@ -235,6 +250,8 @@ int run_mesh(const MeshOptions& options) {
     std::fprintf(stderr, "error: %s\n", e.what());
   } catch (const std::bad_alloc&) {
     std::fprintf(stderr, "error: out of memory\n");
+  } catch (const std::runtime_error& e) {
+    std::fprintf(stderr, "error: %s: %s\n", options.domain.c_str(), e.what());
   }
   return 2;
 }

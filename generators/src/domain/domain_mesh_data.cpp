@@ -1,5 +1,6 @@
 // PlanarDomain <-> io::MeshData (the .poly exchange form). Structural refusals only; the
 // geometry is validate_domain's.
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <limits>
@@ -24,28 +25,33 @@ std::vector<Point2> points_of(const std::vector<double>& xy) {
   return points;
 }
 
-// A region attribute is a label: an integer in the range of io::Label (2.0 is 2; 2.5 is refused
-// rather than silently rounded, since two regions would then share or swap labels unnoticed).
-io::Label label_of_attribute(double attribute, std::size_t region) {
-  const bool integral = std::isfinite(attribute) && std::nearbyint(attribute) == attribute;
-  const bool in_range = attribute >= static_cast<double>(std::numeric_limits<io::Label>::min()) &&
-                        attribute <= static_cast<double>(std::numeric_limits<io::Label>::max());
-  if (!integral || !in_range) {
-    std::string shown;
-    io::append_double(shown, attribute);
-    refuse(DomainProblemKind::bad_region_attribute,
-           "region point " + std::to_string(region) + " has attribute " + shown +
-               ", which is not an integer region label");
-  }
-  return static_cast<io::Label>(attribute);
+// Region labels: the attributes themselves when every one is an integer in the range of
+// io::Label (the usual material id); otherwise the region's 1-based index, and the real
+// attribute travels beside it (RegionSeed::attribute, MeshData::triangle_attributes).
+bool integral_label(double attribute) {
+  return std::isfinite(attribute) && std::nearbyint(attribute) == attribute &&
+         attribute >= static_cast<double>(std::numeric_limits<io::Label>::min()) &&
+         attribute <= static_cast<double>(std::numeric_limits<io::Label>::max());
 }
 
 std::vector<RegionSeed> regions_of(const io::MeshData& data) {
   const std::vector<Point2> seeds = points_of(data.region_points);
   std::vector<RegionSeed> regions(seeds.size());
+  bool all_integral = true;
   for (std::size_t r = 0; r < seeds.size(); ++r) {
     const double attribute = r < data.region_attributes.size() ? data.region_attributes[r] : 0.0;
-    regions[r] = {seeds[r], label_of_attribute(attribute, r)};
+    if (!std::isfinite(attribute)) {
+      std::string shown;
+      io::append_double(shown, attribute);
+      refuse(DomainProblemKind::bad_region_attribute,
+             "region point " + std::to_string(r) + " has attribute " + shown + ", which is not a finite number");
+    }
+    all_integral = all_integral && integral_label(attribute);
+    const double area = r < data.region_max_measures.size() ? data.region_max_measures[r] : -1.0;
+    regions[r] = {seeds[r], 0, attribute, std::isfinite(area) && area > 0 ? area : -1.0};
+  }
+  for (std::size_t r = 0; r < regions.size(); ++r) {
+    regions[r].label = all_integral ? static_cast<io::Label>(regions[r].attribute) : static_cast<io::Label>(r + 1);
   }
   return regions;
 }
@@ -103,8 +109,11 @@ io::MeshData to_mesh_data(const PlanarDomain& domain) {
   for (const RegionSeed& r : domain.regions) {
     data.region_points.push_back(r.point.x);
     data.region_points.push_back(r.point.y);
-    data.region_attributes.push_back(static_cast<double>(r.label));
+    data.region_attributes.push_back(attribute_of(r));
+    data.region_max_measures.push_back(r.max_area);
   }
+  if (std::none_of(domain.regions.begin(), domain.regions.end(), [](const RegionSeed& r) { return r.max_area > 0; }))
+    data.region_max_measures.clear();
   return data;
 }
 

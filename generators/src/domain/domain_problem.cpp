@@ -40,6 +40,7 @@ const char* to_string(DomainProblemKind kind) noexcept {
     case DomainProblemKind::open_boundary: return "open_boundary";
     case DomainProblemKind::empty_domain: return "empty_domain";
     case DomainProblemKind::bad_region_attribute: return "bad_region_attribute";
+    case DomainProblemKind::hole_outside_domain: return "hole_outside_domain";
   }
   return "unknown";
 }

@@ -170,25 +170,24 @@ void check_duplicate_segments(const PlanarDomain& d, ProblemList& out) {
   }
 }
 
-void check_isolated_vertices(const PlanarDomain& d, ProblemList& out) {
+// The vertices on no segment: isolated points the user wants as mesh vertices.
+std::vector<bool> on_some_segment(const PlanarDomain& d) {
   std::vector<bool> used(d.points.size(), false);
   for (const DomainSegment& s : d.segments) {
     if (s.a < used.size()) used[s.a] = true;
     if (s.b < used.size()) used[s.b] = true;
   }
-  for (std::uint32_t v = 0; v < d.points.size() && !out.full(); ++v) {
-    if (used[v]) continue;
-    out.add(DomainProblemKind::isolated_vertex, {}, {v},
-            "vertex " + std::to_string(v) + " " + point_text(d.points[v]) + " is on no segment");
-  }
+  return used;
 }
 
 // ---- the geometric pair checks ------------------------------------------------------------
 
 struct Box {
   double xmin, xmax, ymin, ymax;
-  std::uint32_t segment;
+  std::uint32_t segment;  // kIsolated for the box of an isolated vertex
+  std::uint32_t vertex = 0;
 };
+constexpr std::uint32_t kIsolated = UINT32_MAX;
 
 // Is p, collinear with segment (a, b), strictly between a and b?
 bool strictly_inside_collinear(const Point2& p, const Point2& a, const Point2& b) {
@@ -283,21 +282,45 @@ std::vector<Box> usable_segment_boxes(const PlanarDomain& d) {
     if (!is_finite(p) || !is_finite(q) || p == q) continue;
     boxes.push_back({std::min(p.x, q.x), std::max(p.x, q.x), std::min(p.y, q.y), std::max(p.y, q.y), s});
   }
+  const std::vector<bool> used = on_some_segment(d);
+  for (std::uint32_t v = 0; v < d.points.size(); ++v) {
+    const Point2& p = d.points[v];
+    if (!used[v] && is_finite(p)) boxes.push_back({p.x, p.x, p.y, p.y, kIsolated, v});
+  }
   return boxes;
+}
+
+// An isolated vertex strictly inside a segment would be a T-junction: refused as one. (At a
+// segment's end it has the coordinates of another vertex: a duplicate, reported.)
+void classify_isolated(const PlanarDomain& d, std::uint32_t s, DomainVertex v, ProblemList& out) {
+  const DomainSegment& seg = d.segments[s];
+  const Point2& p = d.points[v];
+  if (predicates::orient2d(d.points[seg.a], d.points[seg.b], p) != Sign::zero) return;
+  if (!strictly_inside_collinear(p, d.points[seg.a], d.points[seg.b])) return;
+  out.add(DomainProblemKind::vertex_on_segment, {s}, {v},
+          "vertex " + std::to_string(v) + " " + point_text(p) + ", on no segment, lies inside segment " +
+              segment_text(d, s));
+}
+
+void classify_boxes(const PlanarDomain& d, const Box& p, const Box& q, ProblemList& out) {
+  if (p.segment == kIsolated && q.segment == kIsolated) return;  // two points: duplicates, reported
+  if (p.segment == kIsolated) return classify_isolated(d, q.segment, p.vertex, out);
+  if (q.segment == kIsolated) return classify_isolated(d, p.segment, q.vertex, out);
+  classify_pair(d, std::min(p.segment, q.segment), std::max(p.segment, q.segment), out);
 }
 
 // Sweep along x over boxes sorted by xmin: every pair whose closed boxes meet is examined once.
 void check_segment_pairs(const PlanarDomain& d, ProblemList& out) {
   std::vector<Box> boxes = usable_segment_boxes(d);
   std::sort(boxes.begin(), boxes.end(), [](const Box& p, const Box& q) {
-    return p.xmin < q.xmin || (p.xmin == q.xmin && p.segment < q.segment);
+    return std::tie(p.xmin, p.segment, p.vertex) < std::tie(q.xmin, q.segment, q.vertex);
   });
   for (std::size_t i = 0; i < boxes.size() && !out.full(); ++i) {
     const Box& bi = boxes[i];
     for (std::size_t j = i + 1; j < boxes.size() && boxes[j].xmin <= bi.xmax && !out.full(); ++j) {
       const Box& bj = boxes[j];
       if (bj.ymin > bi.ymax || bi.ymin > bj.ymax) continue;
-      classify_pair(d, std::min(bi.segment, bj.segment), std::max(bi.segment, bj.segment), out);
+      classify_boxes(d, bi, bj, out);
     }
   }
 }
@@ -312,7 +335,6 @@ std::vector<DomainProblem> validate_domain(const PlanarDomain& domain, std::size
   check_duplicate_vertices(domain, out);
   check_duplicate_segments(domain, out);
   check_segment_pairs(domain, out);
-  check_isolated_vertices(domain, out);
   return out.take();
 }
 

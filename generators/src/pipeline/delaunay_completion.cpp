@@ -13,10 +13,10 @@ std::uint64_t directed_key(std::uint32_t a, std::uint32_t b) {
   return (static_cast<std::uint64_t>(a) << 32) | b;
 }
 
-// The front's vertices, renumbered 0..n-1 in increasing id order (deterministic).
-std::vector<std::uint32_t> front_vertices(std::span<const FrontEdge> front) {
-  std::vector<std::uint32_t> ids;
-  ids.reserve(front.size() * 2);
+// The front's vertices and the interior ones, renumbered 0..n-1 in increasing id order (deterministic).
+std::vector<std::uint32_t> front_vertices(std::span<const FrontEdge> front, std::span<const std::uint32_t> interior) {
+  std::vector<std::uint32_t> ids(interior.begin(), interior.end());
+  ids.reserve(front.size() * 2 + interior.size());
   for (const FrontEdge& e : front) {
     ids.push_back(e.a);
     ids.push_back(e.b);
@@ -64,8 +64,9 @@ std::vector<std::uint8_t> inside_triangles(const ConstrainedDelaunay2& cdt,
 }  // namespace
 
 std::vector<std::array<std::uint32_t, 3>> complete_by_delaunay(std::span<const Point2> points,
-                                                               std::span<const FrontEdge> front) {
-  const std::vector<std::uint32_t> ids = front_vertices(front);
+                                                               std::span<const FrontEdge> front,
+                                                               std::span<const std::uint32_t> interior) {
+  const std::vector<std::uint32_t> ids = front_vertices(front, interior);
   std::vector<Point2> local_points;
   local_points.reserve(ids.size());
   for (const std::uint32_t id : ids) local_points.push_back(points[id]);

@@ -15,8 +15,10 @@
 namespace certimesh::generators::detail {
 
 /// Triangles (counterclockwise, ids into `points`) filling the region left of `front`, a
-/// closed front. Throws DelaunayError if the front's edges cross (an internal error).
+/// closed front, with the points `interior` (ids strictly inside that region, on no front
+/// edge) as vertices too. Throws DelaunayError if the front's edges cross (an internal error).
 std::vector<std::array<std::uint32_t, 3>> complete_by_delaunay(std::span<const Point2> points,
-                                                               std::span<const FrontEdge> front);
+                                                               std::span<const FrontEdge> front,
+                                                               std::span<const std::uint32_t> interior = {});
 
 }  // namespace certimesh::generators::detail

@@ -18,13 +18,31 @@
 
 namespace certimesh::generators::detail {
 
+// What the classification decides about the input, and the part of it that is meshed.
+struct DomainClassification {
+  // The meshed part, renumbered in input order: the segments with the domain on at least one
+  // side, their vertices, and the isolated vertices inside the domain (holes and regions as
+  // given). Segments with the domain on neither side (in a hole, outside) are eaten, as
+  // Triangle's holes eat them; isolated vertices outside are dropped.
+  PlanarDomain kept;
+  std::vector<DomainVertex> vertex_origin;              // the input id of each kept vertex
+  std::vector<std::uint8_t> inside_sides;               // per kept segment: bit 0 a->b side, bit 1 b->a
+  std::vector<std::array<io::Label, 2>> region;         // per kept segment, the label on each side
+  std::vector<DomainVertex> isolated;                   // kept ids of the isolated vertices
+  std::uint64_t eaten_segments = 0;
+  std::uint64_t dropped_vertices = 0;
+};
+
+/// Classifies `domain` (a valid PSLG). Throws InvalidDomain: hole_outside_domain naming the
+/// hole, open_boundary when no segment bounds a face, empty_domain.
+DomainClassification classify_domain(const PlanarDomain& domain, const ProgressCallback& progress);
+
 struct DomainTriangulation {
   std::vector<FrontEdge> front;            // F(P) over the discretized boundary's points
   std::vector<io::Label> front_region;     // the region label left of each front edge
 };
 
-/// Throws InvalidDomain (open_boundary naming the original segments, or empty_domain).
-DomainTriangulation triangulate_domain(const PlanarDomain& domain, const DiscretizedBoundary& boundary,
-                                       const ProgressCallback& progress);
+/// F(P) over `boundary`, the discretization of `c.kept`.
+DomainTriangulation front_of(const DomainClassification& c, const DiscretizedBoundary& boundary);
 
 }  // namespace certimesh::generators::detail

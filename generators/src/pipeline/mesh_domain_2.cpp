@@ -14,9 +14,11 @@
 #include "certimesh/generators/domain/domain_validation.h"
 #include "certimesh/generators/improvement/quality_improvement_2.h"
 #include "certimesh/topology/quality.h"
+#include "area_bound.h"
 #include "delaunay_completion.h"
 #include "domain_triangulation.h"
 #include "improvement_region.h"
+#include "isolated_vertices.h"
 #include "vertex_smoothing.h"
 #include "refinement_stage.h"
 #include "region_labels.h"
@@ -82,7 +84,10 @@ Point2 scaled(const Point2& p, int e) { return {std::ldexp(p.x, e), std::ldexp(p
 PlanarDomain scaled(PlanarDomain domain, int e) {
   for (Point2& p : domain.points) p = scaled(p, e);
   for (Point2& p : domain.holes) p = scaled(p, e);
-  for (RegionSeed& r : domain.regions) r.point = scaled(r.point, e);
+  for (RegionSeed& r : domain.regions) {
+    r.point = scaled(r.point, e);
+    if (r.max_area > 0.0) r.max_area = std::ldexp(r.max_area, 2 * e);  // an area: the square of the scale
+  }
   return domain;
 }
 
@@ -116,14 +121,27 @@ detail::DiscretizedBoundary discretize_valid_boundary(const PlanarDomain& domain
 struct Generated {
   std::vector<Point2> points;
   Triangles triangles;
-  std::vector<io::Label> labels;
+  std::vector<io::Label> labels;  // internal: the region's 1-based index, 0 for no region
   std::uint64_t completed_by_delaunay = 0;
   std::vector<DomainSegment> subsegments;  // empty: the discretized boundary's, unchanged
 };
 
+// Inside the pipeline a triangle's label is its region's 1-based index (0: no seed), so that
+// each region's attribute, label and maximum area are looked up, whatever the seeds say.
+PlanarDomain with_indexed_regions(PlanarDomain domain) {
+  for (std::size_t r = 0; r < domain.regions.size(); ++r) domain.regions[r].label = static_cast<io::Label>(r + 1);
+  return domain;
+}
+
+std::vector<double> max_area_by_index(const PlanarDomain& domain) {
+  std::vector<double> out{-1.0};
+  for (const RegionSeed& r : domain.regions) out.push_back(r.max_area);
+  return out;
+}
+
 Generated advancing_front_stage(const detail::DomainTriangulation& dt, const detail::DiscretizedBoundary& boundary,
-                                const MeshDomainOptions2& options, const ProgressCallback& progress,
-                                StageClock& clock) {
+                                const detail::DomainClassification& c, const MeshDomainOptions2& options,
+                                const ProgressCallback& progress, StageClock& clock) {
   AdvancingFrontOptions front_options;
   front_options.size = options.size;
   front_options.max_global_retries = kMaxGlobalRetries;
@@ -138,11 +156,20 @@ Generated advancing_front_stage(const detail::DomainTriangulation& dt, const det
     clock.lap("delaunay completion");
   }
   out.labels = detail::region_labels(out.triangles, dt.front, dt.front_region, 0);
+  if (!c.isolated.empty()) {
+    detail::TriangleSoup soup{std::move(out.points), std::move(out.triangles), std::move(out.labels)};
+    detail::insert_isolated_vertices(soup, boundary.subsegments, c.isolated);
+    out.points = std::move(soup.points);
+    out.triangles = std::move(soup.triangles);
+    out.labels = std::move(soup.labels);
+    clock.lap("isolated vertices");
+  }
   return out;
 }
 
 // Improvement where the quality is below the target (improvement_region.h).
-void improvement_stage(Generated& g, const detail::DiscretizedBoundary& boundary, const MeshDomainOptions2& options,
+void improvement_stage(Generated& g, const detail::DiscretizedBoundary& boundary,
+                       std::span<const std::uint32_t> isolated, const MeshDomainOptions2& options,
                        const ProgressCallback& progress, MeshDomainStats2& stats) {
   ImprovementOptions2 improve;
   // Shape quality (improve.size left empty), not the size-aware one: the generator has
@@ -158,11 +185,13 @@ void improvement_stage(Generated& g, const detail::DiscretizedBoundary& boundary
     improve.target_quality = kFrontTargetQuality;
   }
   detail::TriangleSoup soup{std::move(g.points), std::move(g.triangles), std::move(g.labels)};
-  detail::smooth_poor_regions(soup, boundary.subsegments, improve.target_quality, kSmoothingSweeps,
-                              improve.min_angle_floor);
+  std::vector<DomainSegment> kept = boundary.subsegments;  // and an edge at each isolated vertex pins it
+  const std::vector<DomainSegment> pins = detail::pin_edges(soup, isolated);
+  kept.insert(kept.end(), pins.begin(), pins.end());
+  detail::smooth_poor_regions(soup, kept, improve.target_quality, kSmoothingSweeps, improve.min_angle_floor);
   if (options.target_quality <= 0.0 && options.algorithm == MeshAlgorithm2::delaunay)
     improve.target_quality = kDelaunayTargetQuality;
-  const detail::RegionImprovementStats r = detail::improve_bad_region(soup, boundary.subsegments, improve, progress);
+  const detail::RegionImprovementStats r = detail::improve_bad_region(soup, kept, improve, progress);
   stats.improved_region = r.region_triangles;
   stats.improvement_iterations = r.improvement.iterations;
   for (const std::uint64_t n : r.improvement.successes) stats.improvement_operations += n;
@@ -193,8 +222,11 @@ void quality_stage(const PlanarDomain& domain, const detail::DiscretizedBoundary
                 g.completed_by_delaunay, std::move(refined.subsegments)};
 }
 
-// The output: used vertices only, renumbered in first-use order of their ids (deterministic).
-io::MeshData to_output(const Generated& g, const detail::DiscretizedBoundary& boundary) {
+// The output: used vertices only, renumbered in first-use order of their ids (deterministic);
+// the domain's point markers on its vertices, a segment's marker on the Steiner points of its
+// subsegments (as Triangle does); region labels, and real attributes when some region's
+// attribute is not an integer.
+io::MeshData to_output(const Generated& g, const detail::DiscretizedBoundary& boundary, const PlanarDomain& domain) {
   const std::vector<DomainSegment>& subsegments = g.subsegments.empty() ? boundary.subsegments : g.subsegments;
   constexpr std::uint32_t unused = UINT32_MAX;
   std::vector<std::uint32_t> new_id(g.points.size(), unused);
@@ -217,12 +249,27 @@ io::MeshData to_output(const Generated& g, const detail::DiscretizedBoundary& bo
   for (const auto& t : g.triangles) {
     for (const std::uint32_t v : t) out.triangles.push_back(new_id[v]);
   }
-  out.triangle_labels = g.labels;
+  const bool real = std::any_of(domain.regions.begin(), domain.regions.end(), [](const RegionSeed& r) {
+    return attribute_of(r) != static_cast<double>(r.label);
+  });
+  for (const io::Label index : g.labels) {  // the internal 1-based region index
+    const RegionSeed* r = index > 0 ? &domain.regions[static_cast<std::size_t>(index - 1)] : nullptr;
+    out.triangle_labels.push_back(r ? r->label : 0);
+    if (real) out.triangle_attributes.push_back(r ? attribute_of(*r) : 0.0);
+  }
+  if (real) out.triangle_labels = io::labels_of_attributes(out.triangle_attributes);  // as the .ele reader makes them
+  out.point_labels.assign(next, 0);
   for (const DomainSegment& s : subsegments) {
     out.segments.push_back(new_id[s.a]);
     out.segments.push_back(new_id[s.b]);
     out.segment_labels.push_back(s.label);
+    for (const std::uint32_t v : {s.a, s.b})
+      if (v >= domain.points.size()) out.point_labels[new_id[v]] = s.label;
   }
+  for (std::uint32_t v = 0; v < domain.point_labels.size(); ++v) out.point_labels[v] = domain.point_labels[v];
+  if (std::all_of(out.point_labels.begin(), out.point_labels.end(), [](io::Label l) { return l == 0; })) out.point_labels.clear();
+  if (std::all_of(out.segment_labels.begin(), out.segment_labels.end(), [](io::Label l) { return l == 0; })) out.segment_labels.clear();
+  if (std::all_of(out.triangle_labels.begin(), out.triangle_labels.end(), [](io::Label l) { return l == 0; })) out.triangle_labels.clear();
   return out;
 }
 
@@ -244,14 +291,6 @@ void quality_statistics(const io::MeshData& mesh, MeshDomainStats2& stats) {
   stats.mean_quality = mesh.triangle_count() ? sum / static_cast<double>(mesh.triangle_count()) : 0.0;
 }
 
-// The whole domain as its own boundary: the domain triangulation's refusals (open loops, an
-// empty domain) then name the input's own coordinates.
-detail::DiscretizedBoundary unsplit(const PlanarDomain& domain) {
-  detail::DiscretizedBoundary boundary{domain.points, domain.segments, {}};
-  for (std::uint32_t s = 0; s < domain.segments.size(); ++s) boundary.origin.push_back(s);
-  return boundary;
-}
-
 void scale_back(io::MeshData& mesh, int e) {
   for (double& c : mesh.coordinates) c = std::ldexp(c, e);
 }
@@ -263,37 +302,58 @@ MeshDomainResult2 mesh_domain_2(const PlanarDomain& input, const MeshDomainOptio
   MeshDomainResult2 result;
   StageClock clock(result.stats.timings);
   refuse_if_invalid(input);
-  detail::triangulate_domain(input, unsplit(input), progress);  // refusals in the input's coordinates
+  detail::classify_domain(with_indexed_regions(input), progress);  // refusals in the input's coordinates
   clock.lap("validation");
   const int exponent = scale_exponent(input);
-  const PlanarDomain domain = scaled(input, -exponent);
+  const detail::DomainClassification c = detail::classify_domain(with_indexed_regions(scaled(input, -exponent)), progress);
+  result.stats.eaten_segments = c.eaten_segments;
+  result.stats.dropped_vertices = c.dropped_vertices;
+  result.stats.isolated_vertices = c.isolated.size();
+  const PlanarDomain& domain = c.kept;
+  clock.lap("domain triangulation");
   MeshDomainOptions2 options = input_options;
   options.size = detail::boundary_adapted_policy(domain, scaled(input_options.size, -exponent));
   if (options.min_angle <= 0.0 && options.algorithm == MeshAlgorithm2::delaunay) options.min_angle = kDelaunayMinAngle;
+  const std::vector<double> max_area = max_area_by_index(domain);
+  MeshDomainOptions2 sized = options;  // aiming at the regions' maximum areas, if any
+  sized.size = detail::size_for_max_areas(options.size, domain, max_area);
   clock.lap("size field");
-  const detail::DiscretizedBoundary boundary = discretize_valid_boundary(domain, options.size);
-  result.stats.boundary_vertices = boundary.points.size();
+  detail::DiscretizedBoundary boundary = discretize_valid_boundary(domain, sized.size);
+  result.stats.boundary_vertices = boundary.points.size() - c.isolated.size();
   clock.lap("boundary");
-  const detail::DomainTriangulation dt = detail::triangulate_domain(domain, boundary, progress);
-  clock.lap("domain triangulation");
   Generated generated;
   const bool quality = options.min_angle > 0.0;
+  const bool has_max_area = std::any_of(max_area.begin(), max_area.end(), [](double a) { return a > 0; });
   if (options.algorithm == MeshAlgorithm2::advancing_front) {
-    generated = advancing_front_stage(dt, boundary, options, progress, clock);
-  } else if (!quality) {
-    const detail::RefinedTriangulation refined = detail::refine_domain(domain, boundary, options.size, progress);
+    generated = advancing_front_stage(detail::front_of(c, boundary), boundary, c, sized, progress, clock);
+  } else if (!quality || has_max_area) {  // with maximum areas the vertices follow the sizes first
+    const detail::RefinedTriangulation refined = detail::refine_domain(domain, boundary, sized.size, progress);
     generated = Generated{refined.points, refined.triangles, refined.labels, 0, {}};
     clock.lap("delaunay refinement");
   }
   if (options.improve && !generated.triangles.empty()) {
-    improvement_stage(generated, boundary, options, progress, result.stats);
+    improvement_stage(generated, boundary, c.isolated, options, progress, result.stats);
     clock.lap("improvement");
   }
+  // The maximum areas, by bisection of the mesh. With a minimum angle the quality refinement
+  // re-triangulates the vertices instead (from the discretized boundary, which the bisection
+  // would change under it): the areas are aimed at (the vertices follow the sized policy) but
+  // not promised (the angle guarantee comes last).
+  if (has_max_area && !quality) {
+    detail::TriangleSoup soup{std::move(generated.points), std::move(generated.triangles), std::move(generated.labels)};
+    result.stats.area_bisections = detail::enforce_max_areas(soup, boundary, domain, max_area);
+    generated.points = std::move(soup.points);
+    generated.triangles = std::move(soup.triangles);
+    generated.labels = std::move(soup.labels);
+    clock.lap("maximum areas");
+  }
   if (quality) {
-    quality_stage(domain, boundary, options, progress, generated, result.stats);
+    quality_stage(domain, boundary, sized, progress, generated, result.stats);
     clock.lap("quality refinement");
   }
-  result.mesh = to_output(generated, boundary);
+  PlanarDomain labelled = domain;  // the seeds' own labels for the output
+  labelled.regions = input.regions;
+  result.mesh = to_output(generated, boundary, labelled);
   result.stats.completed_by_delaunay = generated.completed_by_delaunay;
   quality_statistics(result.mesh, result.stats);  // in the scaled copy: no area underflows at 2^-900
   scale_back(result.mesh, exponent);

@@ -10,5 +10,7 @@ target_sources(certimesh_generators PRIVATE
   ${CMAKE_CURRENT_LIST_DIR}/refinement_stage.cpp
   ${CMAKE_CURRENT_LIST_DIR}/improvement_region.cpp
   ${CMAKE_CURRENT_LIST_DIR}/vertex_smoothing.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/isolated_vertices.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/area_bound.cpp
   ${CMAKE_CURRENT_LIST_DIR}/mesh_domain_2.cpp
 )

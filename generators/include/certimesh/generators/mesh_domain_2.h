@@ -8,10 +8,15 @@
 //   4. the elements: advancing front (with Delaunay completion of whatever it leaves) or
 //      Delaunay refinement;
 //   5. quality improvement by local modifications, boundary trace kept;
-//   6. with a minimum angle: the constrained Delaunay triangulation of the mesh's vertices,
+//   6. the regions' maximum areas enforced by longest-edge bisection (with 7 instead, aimed at by
+//      the size only);
+//   7. with a minimum angle: the constrained Delaunay triangulation of the mesh's vertices,
 //      refined until every triangle meets the angle or is exempt (quality_refinement_2.h).
 //      It runs last, so nothing after it can lower an angle; after --algorithm delaunay it
 //      replaces stages 4's size-only refinement and 5 (the quality refinement meets the size).
+// Triangle's .poly semantics throughout (planar_domain.h): isolated vertices inside the domain
+// are mesh vertices, segments inside it are mesh edges, segments with the domain on neither
+// side are eaten, a hole point outside every face is refused.
 #pragma once
 
 #include <array>
@@ -60,6 +65,10 @@ struct MeshDomainStats2 {
   std::uint64_t improved_region = 0;        // triangles the improvement stage worked on
   std::uint64_t improvement_iterations = 0; // Algorithm 35 iterations
   std::uint64_t improvement_operations = 0; // local modifications committed
+  std::uint64_t isolated_vertices = 0;      // input vertices on no segment, made mesh vertices
+  std::uint64_t dropped_vertices = 0;       // input vertices outside the domain (not in the mesh)
+  std::uint64_t eaten_segments = 0;         // input segments with the domain on neither side
+  std::uint64_t area_bisections = 0;        // splits that enforced the regions' maximum areas
   double worst_quality = 0.0;
   double mean_quality = 0.0;
   bool quality_refined = false;             // stage 6 ran; then `quality` says how it ended
@@ -68,7 +77,10 @@ struct MeshDomainStats2 {
 };
 
 struct MeshDomainResult2 {
-  io::MeshData mesh;  // dimension 2: triangles with region labels, boundary and cut segments
+  // Dimension 2: triangles with region labels (and real attributes when some region's is not an
+  // integer), boundary and cut segments with their markers, point markers. Vertices: the
+  // domain's kept vertices first, in input order, then the Steiner and interior vertices.
+  io::MeshData mesh;
   MeshDomainStats2 stats;
 };
 

@@ -6,6 +6,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <map>
 #include <vector>
 
 namespace certimesh::io {
@@ -55,6 +56,10 @@ struct MeshData {
   std::vector<Label> triangle_labels;
   std::vector<Index> tetrahedra;
   std::vector<Label> tetrahedron_labels;
+  // A real element attribute of the 2D triangles (Triangle's regional attribute when it is not
+  // an integer): empty, or one per triangle. The .ele format writes it instead of the labels;
+  // the other formats keep only the labels, which are then labels_of_attributes(these).
+  std::vector<double> triangle_attributes;
 
   // 3D domain facets as TetGen's .poly/.smesh give them (empty otherwise).
   FacetList facets;
@@ -76,5 +81,15 @@ struct MeshData {
 
   friend bool operator==(const MeshData&, const MeshData&) = default;
 };
+
+/// Integer labels for real element attributes, for the formats that hold only integers: each
+/// distinct value's 1-based rank in order of first appearance (deterministic; O(n log d)).
+inline std::vector<Label> labels_of_attributes(const std::vector<double>& attributes) {
+  std::map<double, Label> rank;
+  std::vector<Label> labels;
+  labels.reserve(attributes.size());
+  for (const double a : attributes) labels.push_back(rank.emplace(a, static_cast<Label>(rank.size() + 1)).first->second);
+  return labels;
+}
 
 }  // namespace certimesh::io

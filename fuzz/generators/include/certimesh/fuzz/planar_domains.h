@@ -67,7 +67,7 @@ enum class DomainMutation {
   zero_length_segment,  // a segment from a vertex to itself
   vertex_on_segment,    // a new segment through an existing vertex (exactly)
   duplicate_segment,    // an edge listed twice
-  isolated_vertex,      // a vertex on no segment
+  isolated_vertex,      // a vertex on no segment, outside everything (valid since issue 12: dropped)
   open_loop,            // one boundary edge removed (open_boundary: not validate_domain's)
   nan_coordinate,       // a vertex coordinate set to NaN
 };

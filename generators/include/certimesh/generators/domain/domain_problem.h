@@ -22,10 +22,11 @@ enum class DomainProblemKind {
   segments_cross,           // interiors meet in one point
   segments_overlap,         // collinear segments sharing more than a point
   vertex_on_segment,        // a vertex in the open interior of a segment (a T-junction)
-  isolated_vertex,          // a vertex on no segment
+  isolated_vertex,          // no longer refused: an isolated vertex is a mesh vertex (kept for callers)
   open_boundary,            // a segment with the domain on neither side (an open loop)
   empty_domain,             // every face is a hole or unbounded
-  bad_region_attribute,     // a .poly region attribute that is not an integer label
+  bad_region_attribute,     // a .poly region attribute that is not a finite number
+  hole_outside_domain,      // a hole point in no bounded face of the segments
 };
 
 struct DomainProblem {

@@ -17,7 +17,7 @@
 
 namespace certimesh::generators {
 
-/// Every problem of the kinds up to isolated_vertex (see domain_problem.h), at most
+/// Every problem of the kinds up to vertex_on_segment (see domain_problem.h), at most
 /// `max_problems` of them, in a deterministic order; empty when the PSLG is valid.
 std::vector<DomainProblem> validate_domain(const PlanarDomain& domain, std::size_t max_problems = 16);
 

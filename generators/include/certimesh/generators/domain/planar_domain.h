@@ -1,12 +1,15 @@
 // A planar straight-line graph (PSLG) describing a 2D domain, as a Triangle `.poly` file
 // holds it: points, segments with labels, hole points and region seeds.
 //
-// The domain is, following Triangle, the union of the bounded faces of the arrangement of
-// the segments minus the faces that contain a hole point. A segment with the domain on both
-// sides is an internal cut (a crack, or an interface between two regions); a segment with
-// the domain on neither side is refused (an open loop). Region seeds label the faces they lie
-// in. Several components, holes and cuts are allowed; isolated points are not (they belong
-// to point-set triangulation, not to domain meshing).
+// The domain is, following Triangle (design decision 8), the union of the bounded faces of
+// the arrangement of the segments minus the faces that contain a hole point. A segment with
+// the domain on both sides is an internal edge of the mesh (a crack or a dangling cut, a
+// segment tree inside a face, an interface between two regions); a segment with the domain on
+// neither side (inside a hole, outside everything) is eaten as Triangle's holes eat it: it is
+// not in the mesh. An isolated point (on no segment) inside the domain is a mesh vertex; one
+// outside it is dropped, as Triangle's -j drops it. Region seeds give the faces they lie in a
+// real attribute and, optionally, a maximum triangle area. A hole point outside every bounded
+// face is refused.
 #pragma once
 
 #include <cstdint>
@@ -29,9 +32,17 @@ struct DomainSegment {
 
 struct RegionSeed {
   Point2 point;
-  io::Label label = 0;
+  io::Label label = 0;      // the triangles' label: the attribute when it is an integer
+  double attribute = 0.0;   // Triangle's regional attribute (a real number)
+  double max_area = -1.0;   // every triangle of the region has at most this area; <= 0: none
   friend bool operator==(const RegionSeed&, const RegionSeed&) = default;
 };
+
+/// The attribute a seed gives its region: a seed built in code with only a label has its
+/// label as attribute.
+inline double attribute_of(const RegionSeed& r) {
+  return r.attribute == 0.0 && r.label != 0 ? static_cast<double>(r.label) : r.attribute;
+}
 
 struct PlanarDomain {
   std::vector<Point2> points;
