@@ -4,7 +4,6 @@
 #include <string>
 #include <string_view>
 
-#include "certimesh/generators/mesh_domain_2.h"
 #include "cli.h"
 
 namespace certimesh::cli {
@@ -66,10 +65,8 @@ std::string mesh_help() {
          ")\n"
          "  --min-angle A        every triangle's smallest angle at least A degrees, 0 < A < 60\n"
          "                       (Triangle's -q A; default: " +
-         (d.min_angle > 0 ? format("%g", d.min_angle)
-                          : format("%g with --algorithm delaunay, none with the front", generators::kDelaunayMinAngle)) +
-         ").\n"
-         "                       Delaunay refinement\n"
+         (d.min_angle > 0 ? format("%g", d.min_angle) : std::string("no guarantee")) +
+         "). Delaunay refinement\n"
          "                       with segment splitting (Ruppert, Shewchuk; concentric shells)\n"
          "                       runs last: with --algorithm delaunay it is the refinement (and\n"
          "                       meets --size); with the front, the front and the improvement\n"

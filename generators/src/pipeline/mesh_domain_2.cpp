@@ -313,7 +313,6 @@ MeshDomainResult2 mesh_domain_2(const PlanarDomain& input, const MeshDomainOptio
   clock.lap("domain triangulation");
   MeshDomainOptions2 options = input_options;
   options.size = detail::boundary_adapted_policy(domain, scaled(input_options.size, -exponent));
-  if (options.min_angle <= 0.0 && options.algorithm == MeshAlgorithm2::delaunay) options.min_angle = kDelaunayMinAngle;
   const std::vector<double> max_area = max_area_by_index(domain);
   MeshDomainOptions2 sized = options;  // aiming at the regions' maximum areas, if any
   sized.size = detail::size_for_max_areas(options.size, domain, max_area);

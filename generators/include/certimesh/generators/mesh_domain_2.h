@@ -34,19 +34,13 @@ namespace certimesh::generators {
 
 enum class MeshAlgorithm2 { advancing_front, delaunay };
 
-/// The smallest angle Delaunay refinement guarantees by default: the bound up to which it is
-/// proven to end (Shewchuk 2002), in degrees.
-inline constexpr double kDelaunayMinAngle = 20.7;
-
 struct MeshDomainOptions2 {
   MeshAlgorithm2 algorithm = MeshAlgorithm2::advancing_front;
   SizePolicy size;
   bool improve = true;           // run the local-modification improvement
   double target_quality = 0.0;   // 0 = 0.93 after the advancing front; after Delaunay refinement
                                  // 0.9 for the smoothing, 0.85 for Algorithm 35
-  /// The smallest angle wanted, degrees, in (0, 60); 0 = the default: the proven bound
-  /// kDelaunayMinAngle with the Delaunay algorithm (Triangle's -q), no guarantee (stage 6 off)
-  /// after the front.
+  /// The smallest angle wanted, degrees, in (0, 60); 0 = no guarantee (stage 6 off).
   double min_angle = 0.0;
   /// Stage 6's Steiner point cap (quality_refinement_2.h).
   std::uint64_t max_steiner = 4'000'000;
