@@ -134,7 +134,7 @@ def timed(cmd, timeout):
 def main():
     ap = argparse.ArgumentParser()
     ap.add_argument("--certimesh", required=True)
-    ap.add_argument("--out", default="/tmp/graded_domains")
+    ap.add_argument("--out", default="build/graded_domains")
     ap.add_argument("--only", default="")
     ap.add_argument("--extra", default="")
     ap.add_argument("--gmsh", default="gmsh")

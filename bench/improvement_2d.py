@@ -48,7 +48,7 @@ def main():
     ap.add_argument("--new", required=True)
     ap.add_argument("--old", required=True)
     ap.add_argument("--timeout", type=float, default=300)
-    ap.add_argument("--out", default="/tmp/improvement_2d")
+    ap.add_argument("--out", default="build/improvement_2d")
     args = ap.parse_args()
     os.makedirs(args.out, exist_ok=True)
     loops, holes = graded_domains.domains()["wavy-10000"]

@@ -16,8 +16,7 @@ namespace {
 using predicates::Point2;
 using predicates::Sign;
 
-// The sweep's order: by y, then x.
-bool lower(const Point2& a, const Point2& b) { return a.y != b.y ? a.y < b.y : a.x < b.x; }
+bool lower(const Point2& a, const Point2& b) { return sweep_less(a, b); }  // the sweep's order
 
 // Union-find over 0..n-1 (Boost's disjoint sets, path compression and union by rank).
 class UnionFind {

@@ -29,7 +29,7 @@ namespace {
 using predicates::Point2;
 using predicates::Sign;
 
-bool lex_less(const Point2& a, const Point2& b) { return a.y != b.y ? a.y < b.y : a.x < b.x; }
+bool lex_less(const Point2& a, const Point2& b) { return sweep_less(a, b); }
 
 struct Segment {
   Point2 lo, hi;  // lexicographically lower and upper end

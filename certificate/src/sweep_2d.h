@@ -15,9 +15,14 @@
 #include <string>
 #include <vector>
 
+#include "certimesh/predicates/point.h"
 #include "mesh_view.h"
 
 namespace certimesh::certificate::detail {
+
+/// The sweep's order on points: by y, then x (lexicographic, so horizontal segments need no
+/// special case).
+inline bool sweep_less(const predicates::Point2& a, const predicates::Point2& b) { return a.y != b.y ? a.y < b.y : a.x < b.x; }
 
 struct SweepAnswer {
   int winding = 0;               // W at a point infinitesimally left of the query point
