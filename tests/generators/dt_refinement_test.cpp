@@ -5,6 +5,7 @@
 
 #include "certimesh/certificate/check_mesh.h"
 #include "certimesh/generators/delaunay/delaunay_refinement_2.h"
+#include "certimesh/predicates/orient2d.h"
 #include "dt_triangulation_checks.h"
 
 namespace certimesh::testing {
@@ -123,6 +124,34 @@ TEST(dt_refinement, AutomaticSizeAndQualityOnAPolygonWithASharpAngle) {
   const Refined r = refine(d, DelaunayRefinementOptions{});
   EXPECT_FALSE(r.stats.bound_reached);
   expect_certified(d, r);
+}
+
+
+// A side cut into pieces of alternating lengths 2.3h and 3.2h (as the graded boundary of a
+// star of 2000 spikes was, 2026-12), each point the rounding of a point of the side: where a
+// point is rounded outward, the triangle of it and its two neighbours is a flat sliver inside
+// the domain, too big for h, and the rounded midpoint of its long edge can fall across the
+// subsegments, outside the region. Inserted there, it put triangles outside the domain.
+TEST(dt_refinement, RoundedMidpointsNextToASegmentStayInside) {
+  const double h = 0.05;
+  for (const double slope : {0.3, 0.7, 1.9}) {
+    for (const double shift : {0.1234567, 0.7654321, 3.3}) {
+      const Point2 a{shift, shift / 3}, b{shift + 1, shift / 3 + slope};
+      const double length = std::hypot(b.x - a.x, b.y - a.y), u = 2.3 * h, v = 3.2 * h;
+      std::vector<Point2> loop;
+      for (double t = 0; t < length - v; t += loop.size() % 2 ? v : u)
+        loop.push_back({a.x + (b.x - a.x) * (t / length), a.y + (b.y - a.y) * (t / length)});
+      std::vector<Point2> rest = subdivided({b, {b.x, b.y + 1}, {a.x, a.y + 1}, a}, 0.9 * h);
+      rest.erase(std::find(rest.begin(), rest.end(), a), rest.end());  // the pieces of (a, b)
+      loop.insert(loop.end(), rest.begin(), rest.end());
+      Domain d;
+      add_loop(d, loop);
+      DelaunayRefinementOptions options;
+      options.size.uniform_size = h;
+      SCOPED_TRACE("slope " + std::to_string(slope) + " shift " + std::to_string(shift));
+      expect_certified(d, refine(d, options));
+    }
+  }
 }
 
 }  // namespace

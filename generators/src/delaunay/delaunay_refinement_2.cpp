@@ -144,8 +144,14 @@ class Refiner {
     return insert(m, t, label);
   }
 
+  // Inserts q when it lies in a triangle of region `label`. An edge midpoint is rounded, so
+  // it need not lie on its edge: next to a segment it can fall across it, outside the region
+  // (an edge along a segment, between points rounded onto the segment's line). The cavity
+  // never crosses a constrained edge, so q's star then stays inside the region.
   bool insert(const Point2& q, TriangleId hint, int label) {
-    const VertexId v = cdt_.insert_point(q, hint);
+    const TriangleId at = cdt_.locate(q, hint);
+    if (at == none || !cdt_.is_live(at) || labels_[at] != label) return false;
+    const VertexId v = cdt_.insert_point(q, at);
     if (v == none) return false;
     ++stats_.inserted;
     labels_.resize(cdt_.triangle_slot_count(), -1);
