@@ -12,6 +12,7 @@
 
 namespace certimesh::certificate::detail {
 
+/// Also sums integers times powers of two (m 2^e), in the same units.
 class ExactProductSum {
  public:
   /// Adds sign * a * b exactly (a, b finite).
@@ -20,17 +21,19 @@ class ExactProductSum {
     int ea = 0, eb = 0;
     const auto ma = static_cast<std::int64_t>(std::ldexp(std::frexp(a, &ea), 53));  // a = ma 2^(ea - 53)
     const auto mb = static_cast<std::int64_t>(std::ldexp(std::frexp(b, &eb), 53));
-    const long exponent = static_cast<long>(ea) + eb - 106;
     term_ = static_cast<long>(ma);
     term_ *= static_cast<long>(mb);
     if (sign < 0) term_ = -term_;
-    if (exponent < unit_) {
-      if (unit_ != LONG_MAX) sum_ <<= static_cast<mp_bitcnt_t>(unit_ - exponent);
-      unit_ = exponent;
-    }
-    if (exponent > unit_) term_ <<= static_cast<mp_bitcnt_t>(exponent - unit_);
-    sum_ += term_;
+    add_term(static_cast<long>(ea) + eb - 106);
   }
+  /// Adds m * 2^exponent exactly.
+  void add(const mpz_class& m, long exponent) {
+    if (m == 0) return;
+    term_ = m;
+    add_term(exponent);
+  }
+  /// The sign of the sum: -1, 0 or +1.
+  int sign() const { return sgn(sum_); }
   /// The sum, exactly.
   mpq_class value() const {
     mpq_class q(sum_);
@@ -42,6 +45,15 @@ class ExactProductSum {
   }
 
  private:
+  void add_term(long exponent) {
+    if (exponent < unit_) {
+      if (unit_ != LONG_MAX) sum_ <<= static_cast<mp_bitcnt_t>(unit_ - exponent);
+      unit_ = exponent;
+    }
+    if (exponent > unit_) term_ <<= static_cast<mp_bitcnt_t>(exponent - unit_);
+    sum_ += term_;
+  }
+
   mpz_class sum_ = 0, term_ = 0;
   long unit_ = LONG_MAX;  // the sum is sum_ * 2^unit_
 };

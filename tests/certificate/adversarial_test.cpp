@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <random>
 #include <vector>
 
 #include "certimesh/certificate/check_mesh.h"
@@ -153,6 +154,71 @@ TEST(CertificateAdversary, DomainMeasureIsExactAcrossExponents) {
   EXPECT_EQ(r.statistics.domain_measure, exact.get_d());
   EXPECT_EQ(r.statistics.measure, exact.get_d());
   EXPECT_EQ(r.statistics.measure_difference, 0.0);
+}
+
+// The rounding-box rule (design decision 2) at the edge of the box: a triangle split at a
+// vertex v near the middle of its side BC, v the rounding of a point of BC moved by -2..2 ulps
+// per coordinate, at scales 2^-1000 to 2^1000 and for sides of every slope sign (and axis-
+// parallel ones). The mesh is valid exactly when BC meets v's rounding box. Oracle: the box's
+// ends as rationals (half-way to the neighbouring doubles) and the sign of the line's equation
+// at its four corners, plus the axis ranges.
+bool side_meets_rounding_box(const double* b, const double* c, const double* v) {
+  mpq_class lo[2], hi[2];
+  for (int k = 0; k < 2; ++k) {
+    const double below = std::nextafter(v[k], -INFINITY), above = std::nextafter(v[k], INFINITY);
+    lo[k] = std::isfinite(below) ? (mpq_class(v[k]) + mpq_class(below)) / 2 : mpq_class(v[k]);
+    hi[k] = std::isfinite(above) ? (mpq_class(v[k]) + mpq_class(above)) / 2 : mpq_class(v[k]);
+    if (mpq_class(std::max(b[k], c[k])) < lo[k] || mpq_class(std::min(b[k], c[k])) > hi[k]) return false;
+  }
+  int negative = 0, positive = 0;
+  for (int corner = 0; corner < 4; ++corner) {
+    const mpq_class x = corner & 1 ? hi[0] : lo[0], y = corner & 2 ? hi[1] : lo[1];
+    const mpq_class f = (mpq_class(c[0]) - b[0]) * (y - b[1]) - (mpq_class(c[1]) - b[1]) * (x - b[0]);
+    negative += f < 0, positive += f > 0;
+  }
+  return negative < 4 && positive < 4;
+}
+
+TEST(CertificateAdversary, RoundingBoxRuleAtTheEdgeOfTheBox) {
+  std::mt19937_64 random(12);
+  std::uniform_real_distribution<double> unit(0.25, 1.0);
+  int accepted = 0, refused = 0;
+  for (int trial = 0; trial < 600; ++trial) {
+    const int s = std::vector<int>{0, 7, -30, 1000, -1000, 500}[static_cast<std::size_t>(trial % 6)];
+    const int slope = trial / 6 % 4;  // BC falling, rising, horizontal, vertical
+    double bx = 1, by = 0, cx = 0, cy = 1;
+    if (slope == 1) bx = 0, by = 0, cx = 1, cy = 1;
+    if (slope == 2) bx = 1, by = 0.5, cx = 0, cy = 0.5;
+    if (slope == 3) bx = 0.5, by = 0, cx = 0.5, cy = 1;
+    const double kb = unit(random), kc = unit(random);
+    MeshData m;
+    m.dimension = 2;
+    // A = the corner off BC; B or C moved along one coordinate: BC has a random slope.
+    const double ax = slope == 1 ? 1 : 0, ay = 0;
+    const double b0 = std::ldexp(bx * (slope == 0 ? 1 + kb : 1), s), b1 = std::ldexp(by, s);
+    const double c0 = std::ldexp(cx, s), c1 = std::ldexp(cy * (slope == 3 || slope == 2 ? 1 : 1 + kc), s);
+    const double t = 0.3 + 0.4 * unit(random);
+    double v[2] = {b0 + (c0 - b0) * t, b1 + (c1 - b1) * t};
+    for (double& x : v) {
+      const int ulps = static_cast<int>(random() % 5) - 2;
+      for (int i = 0; i < std::abs(ulps); ++i) x = std::nextafter(x, ulps > 0 ? INFINITY : -INFINITY);
+    }
+    m.coordinates = {std::ldexp(ax, s), std::ldexp(ay, s), b0, b1, c0, c1, v[0], v[1]};
+    if (twice_area(m, 0, 1, 2) < 0) std::swap(m.coordinates[2], m.coordinates[4]), std::swap(m.coordinates[3], m.coordinates[5]);
+    m.triangles = {0, 1, 3, 0, 3, 2};
+    ASSERT_GT(twice_area(m, 0, 1, 3), 0);
+    ASSERT_GT(twice_area(m, 0, 3, 2), 0);
+    MeshData d = m;
+    d.triangles.clear();
+    d.coordinates.resize(6);
+    d.segments = {0, 1, 1, 2, 2, 0};
+    const bool expected = side_meets_rounding_box(&m.coordinates[2], &m.coordinates[4], v);
+    const Report r = check_mesh(m, &d);
+    EXPECT_EQ(r.valid, expected) << "trial " << trial << ": " << r.finding.message;
+    (expected ? accepted : refused) += 1;
+  }
+  EXPECT_GT(accepted, 100);  // both answers occur
+  EXPECT_GT(refused, 100);
 }
 
 // Statistics at coordinates near 2^900 and 2^-1000: the deviation of the rounded vertex scales
