@@ -88,6 +88,12 @@ Shape book(int k) { return {certimesh::fuzz::book_3d(k), {}, false}; }
 Shape pinwheel(int k) { return {certimesh::fuzz::pinwheel_2d(k), {}, false}; }
 Shape open_book(int k) { return {certimesh::fuzz::open_book_3d(k), {}, false}; }
 Shape rings(int k) { return {certimesh::fuzz::nested_rings_2d(k), {}, false}; }
+Shape spiked(int k) {
+  Shape s;
+  s.mesh = certimesh::fuzz::spiked_star_2d(k, 16, s.domain);
+  s.has_domain = true;
+  return s;
+}
 Shape holes(int n) {
   Shape s;
   s.mesh = certimesh::fuzz::holey_grid_2d(n | 1, s.domain);  // odd: the corner squares stay
@@ -112,13 +118,15 @@ int main(int argc, char** argv) {
   // Full size: 200,000 triangles; 250,000 triangles and 61,250 hole points; 100,000
   // triangles in 12,500 nested rings; the 3D fan at 2,000 tetrahedra (it is quadratic);
   // 100,000 parts pinched at one vertex; 1,000 tetrahedra in every other wedge around one edge
-  // (the 3D embedding's box grid is quadratic on it, like book_3d).
+  // (the 3D embedding's box grid is quadratic on it, like book_3d); 400,000 triangles of a
+  // spiked star with 375,000 Steiner points rounded off their segments.
   static Case cases[] = {{"star_fan_2d", star, sized(100000), {}, false},
                          {"holey_grid_2d_with_domain", holes, std::max(9, static_cast<int>(495 * std::sqrt(scale))), {}, false},
                          {"nested_rings_2d", rings, sized(12500), {}, false},
                          {"book_3d", book, sized(2000), {}, false},
                          {"pinwheel_2d", pinwheel, sized(100000), {}, false},
-                         {"open_book_3d", open_book, sized(1000), {}, false}};
+                         {"open_book_3d", open_book, sized(1000), {}, false},
+                         {"spiked_star_2d_with_domain", spiked, sized(12500), {}, false}};
   for (Case& c : cases) {
     benchmark::RegisterBenchmark(("BM_worst_" + c.name + "_certimesh").c_str(), run_certimesh, &c)->Unit(benchmark::kMillisecond);
     benchmark::RegisterBenchmark(("BM_worst_" + c.name + "_cgal_reference").c_str(), run_cgal, &c)->Unit(benchmark::kMillisecond);

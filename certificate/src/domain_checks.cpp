@@ -17,9 +17,11 @@
 #include "certimesh/predicates/orient3d.h"
 #include "close_pairs.h"
 #include "domain_faces.h"
+#include "exact_sum.h"
 #include "facet_domain_3.h"
 #include "on_simplex.h"
 #include "rational.h"
+#include "segments_near_points_2d.h"
 #include "stages.h"
 #include "sweep_2d.h"
 
@@ -183,36 +185,10 @@ FacetsAtVertex facets_at_vertices(const Domain& d) {
   return at;
 }
 
-// Every (mesh vertex, domain facet) incidence by the rounding-box rule (exact only, for a mesh
-// vertex that is a domain vertex). A mesh vertex at a domain vertex with facets is on exactly
-// those facets: the domain passed its first-contact test, so its vertices lie on no other
-// facet. Every other mesh vertex looks for the facets whose double bounding box meets its
-// accepted box: a point outside a facet's bounding box has its rounding box outside too.
-std::vector<OnFacet> incidences(const MeshView& m, const Domain& d, const DomainVertexMatch& match) {
-  const FacetsAtVertex at = facets_at_vertices(d);
-  std::vector<OnFacet> out;
-  std::vector<Index> unmatched;  // vertices the grid must answer for
-  for (Index v = 0; v < m.vertex_count; ++v) {
-    const std::size_t before = out.size();
-    for (std::uint32_t i = match.range[v].first; i < match.range[v].second; ++i)
-      for (std::size_t k = at.offset[match.order[i]]; k < at.offset[match.order[i] + 1]; ++k) out.push_back({v, d.face_of(at.facet[k]), true});
-    if (out.size() == before) unmatched.push_back(v);
-  }
-  if (!unmatched.empty()) {
-    std::vector<Box> boxes;
-    for (std::size_t f = 0; f < d.facets.size(); ++f) boxes.push_back(facet_box(d.geo, d.facets.facet(f), d.geo.dim));
-    const BoxGrid grid(boxes, m.dim);
-    for (Index v : unmatched) {
-      const double* p = m.xyz + static_cast<std::size_t>(v) * m.dim;
-      grid.each_overlapping(accepted_bounds(p, m.dim, d.tolerance), [&](std::size_t f) {
-        const auto s = corners(d.geo, d.facets.facet(f), m.dim);
-        const bool exact = lies_exactly_on(s, m.dim, p);  // then its box meets it
-        if (exact || (!d.pinned[v] && lies_on(s, m.dim, p, d.tolerance))) out.push_back({v, d.face_of(f), exact});
-      });
-    }
-  }
+// Sorted, one incidence per (vertex, face), exact if any is: a face's triangles share edges.
+std::vector<OnFacet> finish_incidences(std::vector<OnFacet>& out) {
   std::sort(out.begin(), out.end());
-  std::size_t kept = 0;  // one incidence per (vertex, face), exact if any is: a face's triangles share edges
+  std::size_t kept = 0;
   for (std::size_t i = 0; i < out.size(); ++i) {
     if (kept > 0 && out[kept - 1].vertex == out[i].vertex && out[kept - 1].facet == out[i].facet) {
       out[kept - 1].exact = out[kept - 1].exact || out[i].exact;
@@ -224,10 +200,54 @@ std::vector<OnFacet> incidences(const MeshView& m, const Domain& d, const Domain
   return out;
 }
 
+// Every (mesh vertex, domain facet) incidence by the rounding-box rule (exact only, for a mesh
+// vertex that is a domain vertex). A mesh vertex at a domain vertex with facets is on exactly
+// those facets: the domain passed its first-contact test, so its vertices lie on no other
+// facet. Every other mesh vertex is tested against candidate facets: in 2D with rounding boxes,
+// those of the sweep of segments_near_points_2d.h; otherwise those whose double bounding box
+// meets its accepted box (a point outside a facet's bounding box has its rounding box outside).
+std::vector<OnFacet> incidences(const MeshView& m, const Domain& d, const DomainVertexMatch& match) {
+  const FacetsAtVertex at = facets_at_vertices(d);
+  std::vector<OnFacet> out;
+  std::vector<Index> unmatched;  // vertices the broad phase must answer for
+  for (Index v = 0; v < m.vertex_count; ++v) {
+    const std::size_t before = out.size();
+    for (std::uint32_t i = match.range[v].first; i < match.range[v].second; ++i)
+      for (std::size_t k = at.offset[match.order[i]]; k < at.offset[match.order[i] + 1]; ++k) out.push_back({v, d.face_of(at.facet[k]), true});
+    if (out.size() == before) unmatched.push_back(v);
+  }
+  auto test = [&](Index v, std::size_t f) {
+    const double* p = m.xyz + static_cast<std::size_t>(v) * m.dim;
+    const auto s = corners(d.geo, d.facets.facet(f), m.dim);
+    const bool exact = lies_exactly_on(s, m.dim, p);  // then its box meets it
+    if (exact || (!d.pinned[v] && lies_on(s, m.dim, p, d.tolerance))) out.push_back({v, d.face_of(f), exact});
+  };
+  if (unmatched.empty()) return finish_incidences(out);
+  if (m.dim == 2 && !d.tolerance.active()) {  // rounding boxes: the sweep, O(n log n + k)
+    std::vector<Segment2> segments;
+    for (std::size_t f = 0; f < d.facets.size(); ++f) segments.push_back({d.geo.p2(d.facets.facet(f)[0]), d.geo.p2(d.facets.facet(f)[1])});
+    std::vector<predicates::Point2> points;
+    for (Index v : unmatched) points.push_back(m.p2(v));
+    for (const auto& [q, f] : segments_near_points_2d(segments, points)) test(unmatched[q], f);
+  } else {  // 3D, or a tolerance's wider boxes: a box grid (quadratic where many boxes overlap)
+    std::vector<Box> boxes;
+    for (std::size_t f = 0; f < d.facets.size(); ++f) boxes.push_back(facet_box(d.geo, d.facets.facet(f), d.geo.dim));
+    const BoxGrid grid(boxes, m.dim);
+    for (Index v : unmatched)
+      grid.each_overlapping(accepted_bounds(m.xyz + static_cast<std::size_t>(v) * m.dim, m.dim, d.tolerance), [&](std::size_t f) { test(v, f); });
+  }
+  return finish_incidences(out);
+}
+
 // Distance from mesh vertex v to the line / plane of domain facet f, for the report: exact up
 // to the final rounding (the deviations are below an ulp, and at coordinates near 2^900 or
 // 2^-1000 the squares would overflow or underflow in double).
 double deviation(const MeshView& m, Index v, const Domain& d, std::size_t f) {
+  if (m.dim == 2) {  // |u x (v - a)| / |u|, u = b - a, in integers times powers of two
+    const Index* s = d.facets.facet(d.plane(f));
+    const double *a = d.geo.xyz + 2 * static_cast<std::size_t>(s[0]), *b = d.geo.xyz + 2 * static_cast<std::size_t>(s[1]);
+    return ratio_to_root(cross_from(a, b, m.xyz + 2 * static_cast<std::size_t>(v)), dot_of_differences(a, b, a, b));
+  }
   const std::vector<Vec> p = face_points(d, f);
   const Vec e = minus(p[1], p[0]), n = m.dim == 2 ? Vec{-e[1], e[0], 0} : cross(e, minus(p[2], p[0]));
   const Q along = dot(n, minus(point_of(m, v), p[0]));

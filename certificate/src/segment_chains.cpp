@@ -37,25 +37,25 @@ int direction(const std::vector<FacetKey>& keys, const FacetSet& b, Index u, Ind
 
 // The area between a chain (p_0 = a, ..., p_k = b, oriented as the mesh orients it) and its
 // segment, exactly, and a bound on it: per edge pq, the trapezoid between pq and the line of
-// the segment, |(q-p).u| (|u x (p-a)| + |u x (q-a)|) / (2|u|^2), u = b - a. The chain's bound
-// is exact and then rounded up to 64 bits (a dyadic number, any exponent): summed as exact
-// rationals, the denominators |u|^2 of 10^4 segments multiplied into one number and the sum
-// took 40 s on a 10^4-gon star.
+// the segment, |(q-p).u| (|u x (p-a)| + |u x (q-a)|) / (2|u|^2), u = b - a. All of it in
+// integers times powers of two (no rational, no gcd); the chain's bound is then rounded up to
+// 64 bits. (Summed as rationals, the denominators |u|^2 of 10^4 segments multiplied into one
+// number: 40 s on a 10^4-gon star.)
 struct Between {
-  Q area = 0;
+  ExactProductSum twice_area;
   ExactProductSum bound;  // of the per-chain bounds rounded up: never below the exact bound
 };
 
-// Adds q >= 0, rounded up to a 64-bit mantissa times a power of two.
-void add_rounded_up(const Q& q, ExactProductSum& sum) {
-  if (q <= 0) return;
-  const long bits = static_cast<long>(mpz_sizeinbase(q.get_num_mpz_t(), 2)) - static_cast<long>(mpz_sizeinbase(q.get_den_mpz_t(), 2));
-  const long shift = 64 - bits;  // q 2^shift has about 64 bits before the point
-  mpz_class num = q.get_num(), den = q.get_den(), m;
-  if (shift > 0) num <<= static_cast<mp_bitcnt_t>(shift);
-  else den <<= static_cast<mp_bitcnt_t>(-shift);
-  mpz_cdiv_q(m.get_mpz_t(), num.get_mpz_t(), den.get_mpz_t());
-  sum.add(m, -shift);
+// Adds num / den (num >= 0, den > 0) rounded up to a 64-bit mantissa times a power of two.
+void add_quotient_rounded_up(const Dyadic& num, const Dyadic& den, ExactProductSum& sum) {
+  if (num.m == 0) return;
+  const long bits = static_cast<long>(mpz_sizeinbase(num.m.get_mpz_t(), 2)) - static_cast<long>(mpz_sizeinbase(den.m.get_mpz_t(), 2));
+  const long shift = 64 - bits;  // num 2^shift / den has about 64 bits before the point
+  mpz_class n = num.m, d = den.m, q;
+  if (shift > 0) n <<= static_cast<mp_bitcnt_t>(shift);
+  else d <<= static_cast<mp_bitcnt_t>(-shift);
+  mpz_cdiv_q(q.get_mpz_t(), n.get_mpz_t(), d.get_mpz_t());
+  sum.add(q, num.e - den.e - shift);
 }
 
 // q rounded up to a double (infinite past the doubles).
@@ -66,19 +66,28 @@ double rounded_up(const Q& q) {
 }
 
 void add_between(const MeshView& m, const std::vector<Index>& chain, int dir, Between& out) {
+  auto at = [&](Index v) { return m.xyz + 2 * static_cast<std::size_t>(v); };
+  const double *a = at(chain.front()), *b = at(chain.back());
+  std::vector<Dyadic> off(chain.size());  // |u x (p_i - a)|
   bool all_on_line = true;
-  for (std::size_t i = 1; i + 1 < chain.size() && all_on_line; ++i)
-    all_on_line = predicates::orient2d(m.p2(chain.front()), m.p2(chain.back()), m.p2(chain[i])) == predicates::Sign::zero;
-  if (all_on_line) return;  // a degenerate polygon: area and bound are zero
-  const Vec a = point_of(m, chain.front()), u = minus(point_of(m, chain.back()), a);
-  Q area = 0, twice_bound_times_uu = 0;
-  for (std::size_t i = 0; i + 1 < chain.size(); ++i) {
-    const Vec p = minus(point_of(m, chain[i]), a), q = minus(point_of(m, chain[i + 1]), a);
-    area += cross2(p, q);
-    twice_bound_times_uu += abs(dot(minus(q, p), u)) * (abs(cross2(u, p)) + abs(cross2(u, q)));
+  for (std::size_t i = 1; i + 1 < chain.size(); ++i) {
+    off[i] = abs(cross_from(a, b, at(chain[i])));
+    all_on_line = all_on_line && off[i].m == 0;
   }
-  out.area += dir * area / 2;  // the chain runs a -> b; the mesh's orientation is dir
-  add_rounded_up(twice_bound_times_uu / (2 * dot(u, u)), out.bound);
+  if (all_on_line) return;  // a degenerate polygon: area and bound are zero
+  // Twice the area of the polygon a, p_1, ..., b closed by the segment: the shoelace sum.
+  for (std::size_t i = 0; i + 1 < chain.size(); ++i) {
+    const double *p = at(chain[i]), *q = at(chain[i + 1]);
+    out.twice_area.add(p[0], q[1], dir), out.twice_area.add(p[1], q[0], -dir);
+  }
+  out.twice_area.add(b[0], a[1], dir), out.twice_area.add(b[1], a[0], -dir);
+  Dyadic twice_bound_times_uu;
+  for (std::size_t i = 0; i + 1 < chain.size(); ++i)
+    if (off[i].m != 0 || off[i + 1].m != 0)
+      twice_bound_times_uu = twice_bound_times_uu + abs(dot_of_differences(at(chain[i]), at(chain[i + 1]), a, b)) * (off[i] + off[i + 1]);
+  Dyadic twice_uu = abs(dot_of_differences(a, b, a, b));
+  twice_uu.e += 1;
+  add_quotient_rounded_up(twice_bound_times_uu, twice_uu, out.bound);
 }
 
 }  // namespace
@@ -123,11 +132,12 @@ Finding check_segment_chains(const MeshView& m, const FacetSet& b, const std::ve
                          " is on no domain segment's chain of mesh edges: the mesh boundary leaves the domain boundary there");
   const Q domain_area = twice_domain_area.value() / 2;
   stats.domain_measure = domain_area.get_d();
-  stats.measure = Q(domain_area + between.area).get_d();
-  stats.measure_difference = between.area.get_d();
+  const Q difference = between.twice_area.value() / 2;
+  stats.measure = Q(domain_area + difference).get_d();
+  stats.measure_difference = difference.get_d();
   const Q bound = between.bound.value();
   stats.measure_difference_bound = rounded_up(bound);
-  if (abs(between.area) > bound)
+  if (abs(difference) > bound)
     return finding(Defect::facet_off_domain_boundary, -1, -1, -1,
                    "the meshed area differs from the domain's by " + std::to_string(stats.measure_difference) +
                        ", more than the rounding of its boundary vertices allows (" + std::to_string(stats.measure_difference_bound) + ")");

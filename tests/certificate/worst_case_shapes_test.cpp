@@ -35,6 +35,21 @@ TEST(WorstCaseShapes, StarPolygonFan) {
   EXPECT_EQ(defect_of(flipped), "inverted_element");
 }
 
+// Every segment of a spiked star carries Steiner points rounded off its line by a fraction of
+// an ulp: each is on its segment by the rounding-box rule, and pushed 10^-9 outward it is not.
+TEST(WorstCaseShapes, SpikedStarWithRoundedSteinerPoints) {
+  MeshData domain;
+  MeshData m = fuzz::spiked_star_2d(300, 8, domain);
+  ASSERT_TRUE(testing::all_elements_positive(m));
+  const Report r = check_mesh(m, &domain);
+  EXPECT_EQ(defect_name(r.finding.defect), std::string("none")) << r.finding.message;
+  EXPECT_GT(r.statistics.vertices_in_rounding_box_only, 2000u);  // most of the 4200 Steiner points
+  const io::Index v = 1 + 600 + 3;  // a Steiner point of the first spike
+  m.coordinates[2 * v] *= 1 + 1e-9, m.coordinates[2 * v + 1] *= 1 + 1e-9;
+  ASSERT_TRUE(testing::all_elements_positive(m));
+  EXPECT_EQ(defect_of(m, &domain), "vertex_off_domain_boundary");
+}
+
 TEST(WorstCaseShapes, EdgeInManyTetrahedra) {
   const MeshData m = fuzz::book_3d(300);
   ASSERT_TRUE(testing::all_elements_positive(m));

@@ -324,14 +324,26 @@ std::optional<typename SimplexMesh<E, S>::FacetRef> SimplexMesh<E, S>::find_face
 
 template <int E, int S>
 void SimplexMesh<E, S>::set_facet_label(const Facet& f, Label label) {
-  if (label == 0)
-    facet_labels_.erase(key_of(f));
-  else
-    facet_labels_[key_of(f)] = label;
+  const Key key = key_of(f);
+  const auto it = facet_labels_.find(key);
+  const int change = (label != 0) - (it != facet_labels_.end());
+  if (label == 0) {
+    if (it != facet_labels_.end()) facet_labels_.erase(it);
+  } else {
+    facet_labels_[key] = label;
+  }
+  if (change == 0) return;
+  for (const VertexId v : f) {
+    if (labelled_facets_at_.size() <= v.value) labelled_facets_at_.resize(v.value + 1, 0);
+    labelled_facets_at_[v.value] += static_cast<std::uint32_t>(change);  // wraps back on -1
+  }
 }
 
 template <int E, int S>
 Label SimplexMesh<E, S>::facet_label(const Facet& f) const {
+  // Most facets have a vertex on no labelled facet: answered without hashing.
+  for (const VertexId v : f)
+    if (v.value >= labelled_facets_at_.size() || labelled_facets_at_[v.value] == 0) return 0;
   const auto it = facet_labels_.find(key_of(f));
   return it == facet_labels_.end() ? 0 : it->second;
 }

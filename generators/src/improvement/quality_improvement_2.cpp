@@ -194,7 +194,11 @@ void run_work_queue(TriangleMesh2& mesh, const ImprovementOptions2& options, con
   WorkQueue queue(mesh, order, options.target_quality, std::max<std::uint32_t>(options.max_attempts, 1));
   for (std::uint32_t slot = 0; slot < mesh.element_slot_count(); ++slot) queue.offer(ElementId{slot});
   std::vector<ElementId> touched;
+  double worst = order.worst();
+  std::uint64_t last_raise = 0;  // the iteration that last raised the worst quality
   while (!queue.empty() && stats.iterations < budget.operations) {
+    if (options.stall_iterations > 0 && stats.iterations - last_raise >= options.stall_iterations) break;
+    if (order.worst() > worst) worst = order.worst(), last_raise = stats.iterations;
     const ElementId e = queue.take();
     ++stats.iterations;
     if (stats.iterations % report_every == 0) report(progress, "improvement", stats.iterations, budget.operations);

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <span>
 
 #include "certimesh/predicates/orient2d.h"
 #include "delaunay_completion.h"
@@ -81,6 +82,42 @@ struct EdgeTriangles {
   }
 };
 
+// The triangles at each vertex (CSR, in triangle order).
+struct VertexStars {
+  std::vector<std::uint32_t> offset, triangle;
+  explicit VertexStars(const TriangleSoup& m) : offset(m.points.size() + 1, 0) {
+    for (const Triangle& t : m.triangles)
+      for (const std::uint32_t v : t) ++offset[v + 1];
+    for (std::size_t v = 0; v < m.points.size(); ++v) offset[v + 1] += offset[v];
+    triangle.resize(offset.back());
+    std::vector<std::uint32_t> fill(offset.begin(), offset.end() - 1);
+    for (std::uint32_t t = 0; t < m.triangles.size(); ++t)
+      for (const std::uint32_t v : m.triangles[t]) triangle[fill[v]++] = t;
+  }
+  std::span<const std::uint32_t> of(std::uint32_t v) const { return {triangle.data() + offset[v], triangle.data() + offset[v + 1]}; }
+};
+
+// The unpinned corner of the host triangles nearest to p when it is within half their mean
+// edge length, else UINT32_MAX. (Measured on Triangle's square_circle_hole.poly, 691 isolated
+// vertices: worst quality 0.055 keeping every generated vertex, 0.67 removing those within a
+// third, 0.83 within a half.)
+std::uint32_t crowding_vertex(const TriangleSoup& m, std::span<const std::uint32_t> hosts, const Point2& p,
+                              const std::vector<std::uint8_t>& pinned) {
+  double length = 0;
+  std::uint32_t nearest = UINT32_MAX;
+  double best = INFINITY;
+  for (const std::uint32_t t : hosts)
+    for (int i = 0; i < 3; ++i) {
+      const Point2 a = m.points[m.triangles[t][static_cast<std::size_t>(i)]], b = m.points[m.triangles[t][static_cast<std::size_t>((i + 1) % 3)]];
+      length += std::hypot(b.x - a.x, b.y - a.y);
+      const std::uint32_t w = m.triangles[t][static_cast<std::size_t>(i)];
+      const double d = std::hypot(a.x - p.x, a.y - p.y);
+      if (!pinned[w] && d < best) best = d, nearest = w;
+    }
+  if (hosts.empty() || !(best < length / static_cast<double>(3 * hosts.size()) / 2)) return UINT32_MAX;
+  return nearest;
+}
+
 }  // namespace
 
 void insert_isolated_vertices(TriangleSoup& mesh, std::span<const DomainSegment> constrained,
@@ -92,19 +129,30 @@ void insert_isolated_vertices(TriangleSoup& mesh, std::span<const DomainSegment>
   const auto is_fixed = [&](std::uint64_t key) { return std::binary_search(fixed.begin(), fixed.end(), key); };
   const TriangleGrid grid(mesh);
   const EdgeTriangles edges(mesh);
+  const VertexStars stars(mesh);
   std::vector<std::uint8_t> cavity(mesh.triangles.size(), 0);
+  std::vector<std::uint8_t> pinned(mesh.points.size(), 0);  // boundary, isolated or given up
+  for (const DomainSegment& s : constrained) pinned[s.a] = pinned[s.b] = 1;
+  for (const std::uint32_t v : isolated) pinned[v] = 1;
   std::vector<std::uint32_t> interior;
   std::vector<std::uint32_t> replaced(mesh.points.size());
   for (std::uint32_t v = 0; v < replaced.size(); ++v) replaced[v] = v;
   for (const std::uint32_t v : isolated) {
     const Point2 p = mesh.points[v];
-    const std::vector<std::uint32_t> hosts = grid.containing(p);
+    std::vector<std::uint32_t> hosts = grid.containing(p);
     bool at_vertex = false;
     for (const std::uint32_t t : hosts)
       for (const std::uint32_t w : mesh.triangles[t])
         if (mesh.points[w] == p) replaced[w] = v, at_vertex = true;
     if (at_vertex) continue;  // the generated vertex there becomes the isolated one
     interior.push_back(v);
+    // A generated vertex much closer to p than the triangles are long would leave a sliver
+    // between them: it goes, and p takes its place (its star joins the cavity).
+    if (const std::uint32_t w = crowding_vertex(mesh, hosts, p, pinned); w != UINT32_MAX) {
+      pinned[w] = 1;
+      for (const std::uint32_t t : stars.of(w))
+        if (std::find(hosts.begin(), hosts.end(), t) == hosts.end()) hosts.push_back(t);
+    }
     for (const std::uint32_t t : hosts) {
       cavity[t] = 1;
       for (int i = 0; i < 3; ++i) {

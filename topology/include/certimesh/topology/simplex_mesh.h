@@ -162,6 +162,7 @@ class SimplexMesh {
 
   std::unordered_map<Key, FacetHolder, FacetKeyHash, CountingFacetKeyEqual> facets_;
   std::unordered_map<Key, Label, FacetKeyHash> facet_labels_;
+  std::vector<std::uint32_t> labelled_facets_at_;  // per vertex slot: its facets in facet_labels_
   mutable std::uint64_t lookups_ = 0;
 };
 

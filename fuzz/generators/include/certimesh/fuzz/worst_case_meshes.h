@@ -5,8 +5,12 @@
 // oracle before use, and the benchmark (bench_certificate_worst) times them at 1e5..1e6.
 #pragma once
 
+#include <gmpxx.h>
+
+#include <bit>
 #include <cmath>
 #include <cstddef>
+#include <cstdint>
 #include <vector>
 
 #include "certimesh/io/mesh_data.h"
@@ -23,7 +27,58 @@ inline void append_circle(io::MeshData& m, int n) {
     if (m.dimension == 3) m.coordinates.push_back(0);
   }
 }
+/// The double nearest to q, ties to even: a point "rounded from an exact point" (decision 2).
+inline double nearest_double(const mpq_class& q) {
+  const double toward_zero = q.get_d();
+  const double away = std::nextafter(toward_zero, q > 0 ? INFINITY : -INFINITY);
+  const mpq_class near_error = abs(q - toward_zero), far_error = abs(q - away);
+  if (near_error != far_error) return near_error < far_error ? toward_zero : away;
+  return (std::bit_cast<std::uint64_t>(toward_zero) & 1) == 0 ? toward_zero : away;
+}
 }  // namespace detail
+
+/// A star of k spikes (notches at radius 1/2, tips at radius 1) whose 2k segments each carry
+/// n - 1 Steiner points, each the double nearest to the exact point at j/n along its segment:
+/// almost every boundary vertex is off its segment's line by a fraction of an ulp, so each one
+/// needs the exact rounding-box test, and the long thin spikes' boxes overlap widely. Each spike
+/// is a ladder of 2n - 1 triangles, the core a fan from the origin: 2nk triangles. `domain` gets
+/// the star polygon (counterclockwise); mesh vertex 0 is the origin, 1..2k the star's corners.
+inline io::MeshData spiked_star_2d(int k, int n, io::MeshData& domain) {
+  const double pi = std::acos(-1.0);
+  domain = io::MeshData{};
+  domain.dimension = 2;
+  for (int i = 0; i < 2 * k; ++i) {  // notch i at 2i, tip i at 2i + 1
+    const double r = i % 2 == 0 ? 0.5 : 1.0, a = pi * i / k;
+    domain.coordinates.push_back(r * std::cos(a));
+    domain.coordinates.push_back(r * std::sin(a));
+    domain.segments.push_back(static_cast<io::Index>(i));
+    domain.segments.push_back(static_cast<io::Index>((i + 1) % (2 * k)));
+  }
+  io::MeshData m;
+  m.dimension = 2;
+  m.coordinates = {0.0, 0.0};
+  m.coordinates.insert(m.coordinates.end(), domain.coordinates.begin(), domain.coordinates.end());
+  auto corner = [&](int i) { return static_cast<io::Index>(1 + (i % (2 * k))); };
+  auto steiner = [&](io::Index from, io::Index to, int j) {  // nearest to from + (to - from) j / n
+    for (int c = 0; c < 2; ++c) {
+      const mpq_class a = m.coordinates[2 * from + c], b = m.coordinates[2 * to + c];
+      mpq_class t(j, n);
+      t.canonicalize();
+      m.coordinates.push_back(detail::nearest_double(a + (b - a) * t));
+    }
+    return static_cast<io::Index>(m.coordinates.size() / 2 - 1);
+  };
+  auto triangle = [&](io::Index a, io::Index b, io::Index c) { m.triangles.insert(m.triangles.end(), {a, b, c}); };
+  for (int i = 0; i < k; ++i) {
+    const io::Index notch = corner(2 * i), tip = corner(2 * i + 1), next = corner(2 * i + 2);
+    triangle(0, notch, next);
+    std::vector<io::Index> left{notch}, right{next};  // rung j: left[j] on notch-tip, right[j] on next-tip
+    for (int j = 1; j < n; ++j) left.push_back(steiner(notch, tip, j)), right.push_back(steiner(next, tip, j));
+    for (int j = 0; j + 1 < n; ++j) triangle(left[j], left[j + 1], right[j + 1]), triangle(left[j], right[j + 1], right[j]);
+    triangle(left[n - 1], tip, right[n - 1]);
+  }
+  return m;
+}
 
 /// A star polygon of 2k sides around the origin (tips at radius 1, notches at radius 1/64),
 /// fan-triangulated from the centre: 2k triangles, 2k boundary edges, most of whose boxes

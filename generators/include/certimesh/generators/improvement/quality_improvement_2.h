@@ -54,6 +54,9 @@ struct ImprovementOptions2 {
   double min_angle_floor = 0.0;
   double target_quality = 0.9;       // Q0: stop when the worst element reaches it
   std::uint64_t max_operations = 0;  // N1; 0 = 5 x the element count
+  /// Work queue: stop after this many iterations in a row that did not raise the worst quality
+  /// (0: only the target and max_operations stop it).
+  std::uint64_t stall_iterations = 0;
   std::uint32_t basket_size = 0;     // N2 (baskets); 0 = 7 % of the element count (at least 16)
   std::uint32_t max_baskets = 0;     // N3 (baskets); 0 = enough that N2 * N3 exceeds the element count
   std::uint8_t operations = all_local_operations_2;
