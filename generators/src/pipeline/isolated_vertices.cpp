@@ -7,6 +7,7 @@
 #include "certimesh/predicates/orient2d.h"
 #include "delaunay_completion.h"
 #include "region_labels.h"
+#include "vertex_stars.h"
 
 namespace certimesh::generators::detail {
 
@@ -80,21 +81,6 @@ struct EdgeTriangles {
   void for_each(std::uint64_t key, F f) const {
     for (auto it = std::lower_bound(half.begin(), half.end(), std::make_pair(key, 0u)); it != half.end() && it->first == key; ++it) f(it->second);
   }
-};
-
-// The triangles at each vertex (CSR, in triangle order).
-struct VertexStars {
-  std::vector<std::uint32_t> offset, triangle;
-  explicit VertexStars(const TriangleSoup& m) : offset(m.points.size() + 1, 0) {
-    for (const Triangle& t : m.triangles)
-      for (const std::uint32_t v : t) ++offset[v + 1];
-    for (std::size_t v = 0; v < m.points.size(); ++v) offset[v + 1] += offset[v];
-    triangle.resize(offset.back());
-    std::vector<std::uint32_t> fill(offset.begin(), offset.end() - 1);
-    for (std::uint32_t t = 0; t < m.triangles.size(); ++t)
-      for (const std::uint32_t v : m.triangles[t]) triangle[fill[v]++] = t;
-  }
-  std::span<const std::uint32_t> of(std::uint32_t v) const { return {triangle.data() + offset[v], triangle.data() + offset[v + 1]}; }
 };
 
 // The unpinned corner of the host triangles nearest to p when it is within half their mean

@@ -1,7 +1,9 @@
 // Isolated input vertices (on no segment, inside the domain) are mesh vertices (design
 // decision 8). The advancing front grows from the boundary and ignores them; afterwards each
 // one's cavity -- the triangles that contain it and their neighbours across unconstrained
-// edges -- is re-triangulated by the constrained Delaunay completion with the vertex inside.
+// edges, and the star of a generated vertex it crowds (within half the containing triangles'
+// mean edge), which it replaces -- is re-triangulated by the constrained Delaunay completion
+// with the vertex inside.
 // The improvement then keeps the vertex in place through a pinned edge (pin_edges).
 #pragma once
 

@@ -1,4 +1,5 @@
 #include "vertex_smoothing.h"
+#include "vertex_stars.h"
 
 #include <algorithm>
 #include <cmath>
@@ -10,23 +11,6 @@
 namespace certimesh::generators::detail {
 
 namespace {
-
-// Vertex -> incident triangles, by a counting sort (Algorithm 3 of the monograph).
-struct VertexStars {
-  std::vector<std::uint32_t> offset, triangle;
-  explicit VertexStars(const TriangleSoup& m) : offset(m.points.size() + 1, 0) {
-    for (const auto& t : m.triangles)
-      for (const std::uint32_t v : t) ++offset[v + 1];
-    for (std::size_t v = 0; v < m.points.size(); ++v) offset[v + 1] += offset[v];
-    triangle.resize(offset.back());
-    std::vector<std::uint32_t> fill(offset.begin(), offset.end() - 1);
-    for (std::uint32_t t = 0; t < m.triangles.size(); ++t)
-      for (const std::uint32_t v : m.triangles[t]) triangle[fill[v]++] = t;
-  }
-  std::span<const std::uint32_t> of(std::uint32_t v) const {
-    return {triangle.data() + offset[v], offset[v + 1] - offset[v]};
-  }
-};
 
 double quality(const Point2& a, const Point2& b, const Point2& c) {
   return topology::triangle_quality(topology::Point2d{a.x, a.y}, topology::Point2d{b.x, b.y},
