@@ -110,6 +110,7 @@ class AdvancingFront {
         sizing_(options.size, measure_.least_distance),
         user_cap_(options.max_triangles),
         retry_cap_(options.max_global_retries),
+        retry_work_cap_(options.max_global_retry_work),
         progress_(progress) {
     result_.points.assign(points.begin(), points.end());
     for (const FrontEdge& e : front) sizing_.at(edge_length(e.a, e.b), midpoint(e.a, e.b));
@@ -231,7 +232,9 @@ class AdvancingFront {
     const Step st = make_step(e);
     if (search(st, false)) return true;
     if (retry_cap_ != 0 && result_.stats.global_retries >= retry_cap_) return false;  // the rest is returned
+    if (retry_work_cap_ != 0 && retry_work_ + front_.live_count() > retry_work_cap_) return false;
     ++result_.stats.global_retries;
+    retry_work_ += front_.live_count();
     return search(st, true);
   }
 
@@ -392,6 +395,7 @@ class AdvancingFront {
   Front2 front_;
   std::uint64_t user_cap_ = 0, bound_ = 0, limit_ = 0;
   std::uint64_t retry_cap_ = 0;
+  std::uint64_t retry_work_cap_ = 0, retry_work_ = 0;  // front edges enumerated by global retries
   const ProgressCallback& progress_;
   AdvancingFrontResult result_;
   std::uint32_t stamp_ = 0;

@@ -43,6 +43,8 @@ constexpr double kDelaunayTargetQuality = 0.85;
 // Full enumerations the advancing front may fall back to (O(front) each) before it hands the
 // rest to the Delaunay completion, which needs no retry.
 constexpr std::uint64_t kMaxGlobalRetries = 256;
+// ... and the front edges they may enumerate together: O(1) retries of a huge front.
+constexpr std::uint64_t kMaxGlobalRetryWork = std::uint64_t{1} << 22;
 
 // Times the stages (for the statistics only: no decision depends on time).
 class StageClock {
@@ -145,6 +147,7 @@ Generated advancing_front_stage(const detail::DomainTriangulation& dt, const det
   AdvancingFrontOptions front_options;
   front_options.size = options.size;
   front_options.max_global_retries = kMaxGlobalRetries;
+  front_options.max_global_retry_work = kMaxGlobalRetryWork;
   AdvancingFrontResult front = advance_front_2(boundary.points, dt.front, front_options, progress);
   clock.lap("advancing front");
   Generated out{std::move(front.points), std::move(front.triangles), {}, 0, {}};
