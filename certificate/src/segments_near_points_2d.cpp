@@ -90,22 +90,17 @@ class NearSweep {
     std::sort(events.begin(), events.end(), [](const Event& a, const Event& b) {
       return a.y != b.y ? a.y < b.y : (a.kind != b.kind ? a.kind < b.kind : a.index < b.index);
     });
-    candidates_.assign(points_.size(), {});
+    out_.clear();
     std::vector<Status::iterator> where(spans_.size(), status_.end());
     for (const Event& e : events) {
       if (e.kind == insert) where[e.index] = status_.insert(spans_[e.index]).first;
       else if (e.kind == remove) status_.erase(where[e.index]);
       else search(e.index, e.kind == search_upper);
     }
-    std::vector<std::pair<std::uint32_t, std::uint32_t>> out;
-    for (std::uint32_t q = 0; q < points_.size(); ++q) {
-      std::vector<std::uint32_t>& c = candidates_[q];
-      horizontal_candidates(points_[q], c);
-      std::sort(c.begin(), c.end());
-      c.erase(std::unique(c.begin(), c.end()), c.end());
-      for (std::uint32_t s : c) out.push_back({q, s});
-    }
-    return out;
+    for (std::uint32_t q = 0; q < points_.size(); ++q) horizontal_candidates(q);
+    std::sort(out_.begin(), out_.end());  // by point, then segment; a segment of both halves once
+    out_.erase(std::unique(out_.begin(), out_.end()), out_.end());
+    return std::move(out_);
   }
 
  private:
@@ -122,27 +117,27 @@ class NearSweep {
     const double inf = std::numeric_limits<double>::infinity();
     const double y0 = upper ? p.y : toward(p.y, -inf), y1 = upper ? toward(p.y, inf) : p.y;
     const double left = toward(p.x, -inf), right = toward(p.x, inf);
-    std::vector<std::uint32_t>& c = candidates_[q];
     const auto first = status_.lower_bound(p);  // the first segment with p left of or on it
     for (auto it = first; it != status_.end(); ++it) {
       if (strictly_beyond(*it, {right, y0}, {right, y1}, Sign::positive)) break;
-      c.push_back(it->id);
+      out_.push_back({q, it->id});
     }
     for (auto it = first; it != status_.begin();) {
       --it;
       if (strictly_beyond(*it, {left, y0}, {left, y1}, Sign::negative)) break;
-      c.push_back(it->id);
+      out_.push_back({q, it->id});
     }
   }
 
   // Horizontal segments at height p.y whose x-range holds p.x: they are disjoint but for
   // shared ends, so the last two starting at or left of p.x are the only ones that can.
-  void horizontal_candidates(const Point2& p, std::vector<std::uint32_t>& c) const {
+  void horizontal_candidates(std::uint32_t q) {
+    const Point2 p = points_[q];
     auto it = std::upper_bound(horizontals_.begin(), horizontals_.end(), Horizontal{p.y, p.x, p.x, 0});
     for (int k = 0; k < 2 && it != horizontals_.begin(); ++k) {
       --it;
       if (it->y != p.y) break;
-      if (it->hi >= p.x) c.push_back(it->id);
+      if (it->hi >= p.x) out_.push_back({q, it->id});
     }
   }
 
@@ -150,7 +145,7 @@ class NearSweep {
   std::vector<Span> spans_;
   std::vector<Horizontal> horizontals_;
   Status status_;
-  std::vector<std::vector<std::uint32_t>> candidates_;
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> out_;  // (point, segment)
 };
 
 }  // namespace
