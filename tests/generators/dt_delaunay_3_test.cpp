@@ -11,6 +11,7 @@
 #include <random>
 
 #include "certimesh/generators/delaunay/delaunay_3.h"
+#include "certimesh/generators/delaunay/perturbed_predicates_3.h"
 #include "dt_delaunay_3_checks.h"
 
 namespace certimesh::testing {
@@ -89,6 +90,25 @@ void expect_order_independent(const std::vector<P3>& p, const std::vector<Tet>& 
   for (Tet& t : back)
     for (auto& v : t) v = perm[v];
   EXPECT_EQ(canonical_set(back), canonical_set(tets)) << "another input order gives other tetrahedra";
+}
+
+// The fast evaluation of the perturbed in-sphere sign against the kernel's generic one, on
+// random quintuples of a 3 x 3 x 3 grid: cospherical (exact zero) ones with a tetrahedron of
+// non-zero volume, the only ones Delaunay3 asks, and the rest.
+TEST(Delaunay3, LiftedPerturbationIsInsphereSos) {
+  const auto p = grid(3);
+  std::mt19937_64 rng(8);
+  std::uniform_int_distribution<std::size_t> pick(0, p.size() - 1);
+  int degenerate = 0;
+  for (int k = 0; k < 60000; ++k) {
+    const P3 &a = p[pick(rng)], &b = p[pick(rng)], &c = p[pick(rng)], &d = p[pick(rng)], &e = p[pick(rng)];
+    if (a == b || a == c || a == d || a == e || b == c || b == d || b == e || c == d || c == e || d == e) continue;
+    if (predicates::orient3d(a, b, c, d) == predicates::Sign::zero) continue;
+    const int expected = predicates::to_int(predicates::insphere_sos(a, b, c, d, e));
+    degenerate += predicates::insphere(a, b, c, d, e) == predicates::Sign::zero ? 1 : 0;
+    ASSERT_EQ(generators::detail::insphere_perturbed(a, b, c, d, e), expected);
+  }
+  EXPECT_GT(degenerate, 1000);
 }
 
 TEST(Delaunay3, UniformPointsAreDelaunay) {

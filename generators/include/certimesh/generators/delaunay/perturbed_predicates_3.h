@@ -1,6 +1,9 @@
 // The signs the 3D Delaunay tetrahedralization decides with, as ints: the exact orientation
 // and the perturbed (SoS) in-sphere sign. The filter is inline here, on the hot path; when it
-// is uncertain the kernel's exact stage (orient3d) or insphere_sos decides.
+// is uncertain the kernel's exact stage decides, and for an exact in-sphere zero the lifted
+// terms of insphere_sos's perturbation are evaluated here by exact orientations
+// (insphere_lifted_perturbation; tests/generators/dt_delaunay_3_test.cpp checks it equal to
+// insphere_sos on every degenerate quintuple of a small grid).
 //
 // Why orient3d is exact and not perturbed: the tetrahedralization never holds a flat
 // tetrahedron, so every in-sphere test is against four points off one plane, and then
@@ -12,6 +15,8 @@
 // (delaunay_3.cpp, conflicts()). orient3d_sos would instead tilt coplanar hull points into
 // flat tetrahedra, as the 2D triangulation's flat hull triangles.
 #pragma once
+
+#include <utility>
 
 #include "certimesh/predicates/insphere.h"
 #include "certimesh/predicates/orient3d.h"
@@ -28,12 +33,42 @@ inline int orient3d_exact(const Point3& a, const Point3& b, const Point3& c, con
   return predicates::to_int(predicates::orient3d(a, b, c, d));
 }
 
+/// insphere_sos's answer when the exact in-sphere sign is zero, for five distinct points with
+/// (a, b, c, d) not coplanar, without its generic GMP search: the perturbed determinant is
+/// det[p, |p|^2 + e(p), 1] (rows a..e, symbolic_perturbation.h), whose first non-zero
+/// term, the rows taken by lexicographic rank, is e(p_r) times the cofactor (-1)^(r+3) *
+/// orient3d(the other four rows, in order); row e's is -orient3d(a, b, c, d), not zero, so
+/// the search ends within five exact orientations. 0 when every cofactor is zero (then
+/// (a, b, c, d) was coplanar and the caller asks insphere_sos).
+inline int insphere_lifted_perturbation(const Point3& a, const Point3& b, const Point3& c, const Point3& d, const Point3& e) {
+  const Point3* p[5] = {&a, &b, &c, &d, &e};
+  int order[5] = {0, 1, 2, 3, 4};
+  auto less = [&](int i, int j) {
+    const Point3 &u = *p[i], &v = *p[j];
+    return u.x != v.x ? u.x < v.x : (u.y != v.y ? u.y < v.y : u.z < v.z);
+  };
+  for (int i = 1; i < 5; ++i)  // insertion sort of five
+    for (int j = i; j > 0 && less(order[j], order[j - 1]); --j) std::swap(order[j], order[j - 1]);
+  for (int r : order) {
+    const Point3* q[4];
+    for (int i = 0, k = 0; i < 5; ++i)
+      if (i != r) q[k++] = p[i];
+    const int o = orient3d_exact(*q[0], *q[1], *q[2], *q[3]);
+    if (o != 0) return (r % 2 == 1) ? o : -o;
+  }
+  return 0;
+}
+
 /// The perturbed in-sphere sign of e against (a, b, c, d): 0 only when e equals one of them.
 inline int insphere_perturbed(const Point3& a, const Point3& b, const Point3& c, const Point3& d, const Point3& e) {
   const predicates::FilteredSign f = predicates::insphere_filtered(a, b, c, d, e);
   if (predicates::is_certain(f)) [[likely]]
     return predicates::to_int(f);
-  return predicates::to_int(predicates::insphere_sos(a, b, c, d, e));
+  const int s = predicates::to_int(predicates::detail::insphere_exact_stage(a, b, c, d, e));
+  if (s != 0) return s;
+  if (e == a || e == b || e == c || e == d || a == b || a == c || a == d || b == c || b == d || c == d) return 0;
+  const int lifted = insphere_lifted_perturbation(a, b, c, d, e);
+  return lifted != 0 ? lifted : predicates::to_int(predicates::insphere_sos(a, b, c, d, e));
 }
 
 }  // namespace certimesh::generators::detail
