@@ -109,6 +109,27 @@ TEST(Delaunay3, LiftedPerturbationIsInsphereSos) {
     ASSERT_EQ(generators::detail::insphere_perturbed(a, b, c, d, e), expected);
   }
   EXPECT_GT(degenerate, 1000);
+  // Points of an integer sphere (all cospherical) and integers near 2^22 (the 128-bit path's
+  // bound), against the kernel's exact insphere where that is not zero.
+  const auto sphere = integer_sphere(625 * 34);
+  std::uniform_int_distribution<std::size_t> on_sphere(0, sphere.size() - 1);
+  std::uniform_int_distribution<long> large(-(1l << 22) + 1, (1l << 22) - 1), near(-3, 3);
+  for (int k = 0; k < 20000; ++k) {
+    std::array<P3, 5> q;
+    if (k % 2 == 0) {
+      for (auto& v : q) v = sphere[on_sphere(rng)];
+    } else {
+      const P3 base{double(large(rng) / 2), double(large(rng) / 2), double(large(rng) / 2)};
+      for (auto& v : q) v = {base.x + double(near(rng)), base.y + double(near(rng)), base.z + double(near(rng))};
+      if (k % 4 == 1) q[4] = {double(large(rng)), double(large(rng)), double(large(rng))};
+    }
+    bool distinct = true;
+    for (int i = 0; i < 5; ++i)
+      for (int j = i + 1; j < 5; ++j) distinct = distinct && !(q[i] == q[j]);
+    if (!distinct || predicates::orient3d(q[0], q[1], q[2], q[3]) == predicates::Sign::zero) continue;
+    ASSERT_EQ(generators::detail::insphere_perturbed(q[0], q[1], q[2], q[3], q[4]),
+              predicates::to_int(predicates::insphere_sos(q[0], q[1], q[2], q[3], q[4])));
+  }
 }
 
 TEST(Delaunay3, UniformPointsAreDelaunay) {

@@ -89,6 +89,11 @@ class Delaunay3 {
     std::uint64_t key;
     std::uint32_t half_face;
   };
+  struct PendingFace {               // a side face waiting for its twin
+    std::uint64_t twin;              // the twin's key
+    std::uint32_t half_face;
+    std::uint32_t slot;              // its own table entry
+  };
 
   void build(std::span<const Point3> input, const ProgressCallback& progress);
   void check_distinct() const;  // throws for the first duplicate, by sorting
@@ -127,7 +132,8 @@ class Delaunay3 {
   std::vector<TetrahedronId> stack_;
   std::vector<BoundaryFace> boundary_;
   std::vector<TetrahedronId> star_;
-  std::vector<EdgeSlot> edges_;     // open-addressing table, a power of two long
+  std::vector<EdgeSlot> edges_;     // open-addressing table, a power of two long, empty between uses
+  std::vector<PendingFace> pending_;
 };
 
 }  // namespace certimesh::generators

@@ -16,6 +16,7 @@
 // flat tetrahedra, as the 2D triangulation's flat hull triangles.
 #pragma once
 
+#include <cstdint>
 #include <utility>
 
 #include "certimesh/predicates/insphere.h"
@@ -59,12 +60,49 @@ inline int insphere_lifted_perturbation(const Point3& a, const Point3& b, const 
   return 0;
 }
 
+__extension__ typedef __int128 Int128;
+
+/// The exact in-sphere sign for points whose coordinates are all integers below 2^22 in
+/// magnitude (integer grids, integer points on a sphere: where exact zeros are common and the
+/// expansion arithmetic of the exact stage was half the time), in 128-bit integers: the
+/// differences are below 2^23, each 3 x 3 minor below 6 * 2^69, each lifted entry below
+/// 3 * 2^46, the determinant below 72 * 2^115 < 2^127. `false` when the points do not qualify.
+inline bool insphere_small_integers(const Point3& a, const Point3& b, const Point3& c, const Point3& d, const Point3& e,
+                                    int* sign) {
+  const Point3* p[5] = {&a, &b, &c, &d, &e};
+  for (const Point3* q : p)
+    for (double v : {q->x, q->y, q->z})
+      if (!(v > -0x1p22 && v < 0x1p22) || v != static_cast<double>(static_cast<std::int32_t>(v))) return false;
+  std::int64_t m[4][4];
+  for (int i = 0; i < 4; ++i) {
+    const std::int64_t x = static_cast<std::int64_t>(p[i]->x - e.x), y = static_cast<std::int64_t>(p[i]->y - e.y),
+                       z = static_cast<std::int64_t>(p[i]->z - e.z);
+    m[i][0] = x, m[i][1] = y, m[i][2] = z, m[i][3] = x * x + y * y + z * z;
+  }
+  auto minor3 = [&](int skip) {  // det of rows != skip, columns 0..2
+    int r[3], k = 0;
+    for (int i = 0; i < 4; ++i)
+      if (i != skip) r[k++] = i;
+    const std::int64_t* u = m[r[0]];
+    const std::int64_t* v = m[r[1]];
+    const std::int64_t* w = m[r[2]];
+    return Int128(u[0]) * (Int128(v[1]) * w[2] - Int128(v[2]) * w[1]) -
+           Int128(u[1]) * (Int128(v[0]) * w[2] - Int128(v[2]) * w[0]) +
+           Int128(u[2]) * (Int128(v[0]) * w[1] - Int128(v[1]) * w[0]);
+  };
+  Int128 det = 0;  // along the lifted column: sum of (-1)^(i+3) m[i][3] * minor3(i)
+  for (int i = 0; i < 4; ++i) det += (i % 2 == 1 ? Int128(m[i][3]) : -Int128(m[i][3])) * minor3(i);
+  *sign = det > 0 ? 1 : (det < 0 ? -1 : 0);
+  return true;
+}
+
 /// The perturbed in-sphere sign of e against (a, b, c, d): 0 only when e equals one of them.
 inline int insphere_perturbed(const Point3& a, const Point3& b, const Point3& c, const Point3& d, const Point3& e) {
   const predicates::FilteredSign f = predicates::insphere_filtered(a, b, c, d, e);
   if (predicates::is_certain(f)) [[likely]]
     return predicates::to_int(f);
-  const int s = predicates::to_int(predicates::detail::insphere_exact_stage(a, b, c, d, e));
+  int s;
+  if (!insphere_small_integers(a, b, c, d, e, &s)) s = predicates::to_int(predicates::detail::insphere_exact_stage(a, b, c, d, e));
   if (s != 0) return s;
   if (e == a || e == b || e == c || e == d || a == b || a == c || a == d || b == c || b == d || c == d) return 0;
   const int lifted = insphere_lifted_perturbation(a, b, c, d, e);
