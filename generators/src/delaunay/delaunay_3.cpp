@@ -192,7 +192,7 @@ void Delaunay3::link_around(VertexId apex, std::span<const TetrahedronId> tetrah
   for (const PendingFace& f : pending_) edges_[f.slot].key = empty_key;
 }
 
-inline bool Delaunay3::in_sphere(TetrahedronId t, const Point3& p, VertexId pid) const {
+[[gnu::always_inline]] inline bool Delaunay3::in_sphere(TetrahedronId t, const Point3& p, VertexId pid) const {
   const VertexId* c = &corner_[4 * std::size_t{t}];
   // (c1, c0, c2, c3) has orient3d > 0, where insphere > 0 means inside.
   const int s = insphere_perturbed(pt(c[1]), pt(c[0]), pt(c[2]), pt(c[3]), p);
@@ -211,7 +211,7 @@ inline bool Delaunay3::in_sphere(TetrahedronId t, const Point3& p, VertexId pid)
 // and its in-sphere sign against the finite tetrahedron behind f perturbs only the lifted
 // entries of f's corners and p (the fourth corner's coefficient is orient3d(f, p) = 0): so
 // that tetrahedron's answer is the circle's, perturbed consistently with every other test.
-bool Delaunay3::conflicts(TetrahedronId t, const Point3& p, VertexId pid) const {
+[[gnu::always_inline]] inline bool Delaunay3::conflicts(TetrahedronId t, const Point3& p, VertexId pid) const {
   const VertexId* c = &corner_[4 * std::size_t{t}];
   if (c[3] != infinite) return in_sphere(t, p, pid);
   const int s = orient3d_exact(pt(c[0]), pt(c[1]), pt(c[2]), p);
