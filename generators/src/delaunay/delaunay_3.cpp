@@ -73,7 +73,9 @@ void Delaunay3::build(std::span<const Point3> input, const ProgressCallback& pro
   for (std::size_t i = 0; i < input.size(); ++i)
     if (!std::isfinite(input[i].x) || !std::isfinite(input[i].y) || !std::isfinite(input[i].z))
       throw DelaunayError("delaunay: point " + std::to_string(i) + " " + describe(input[i]) + " is not finite");
-  if (input.size() >= infinite / 8) throw DelaunayError("delaunay: too many points");
+  // Half-face ids (4 * slot + local) are 32-bit: about 6.8 slots per point leaves room for 2^27.
+  if (input.size() > (std::size_t{1} << 27))
+    throw DelaunayError("delaunay: " + std::to_string(input.size()) + " points: at most 2^27 are supported");
   external_ = detail::hilbert_order_3(input);
   internal_.assign(input.size(), none);
   points_.resize(input.size());
@@ -120,6 +122,7 @@ Delaunay3::TetrahedronId Delaunay3::new_slot() {
     flags_[t] = 0;
     return t;
   }
+  if (flags_.size() >= (std::size_t{1} << 30)) throw DelaunayError("delaunay: more than 2^30 tetrahedron slots");
   const auto t = static_cast<TetrahedronId>(flags_.size());
   flags_.push_back(0);
   // push_back, not resize (which fills the whole growth); the entries are written next.

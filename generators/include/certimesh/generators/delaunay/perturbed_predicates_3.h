@@ -96,17 +96,25 @@ inline bool insphere_small_integers(const Point3& a, const Point3& b, const Poin
   return true;
 }
 
-/// The perturbed in-sphere sign of e against (a, b, c, d): 0 only when e equals one of them.
-inline int insphere_perturbed(const Point3& a, const Point3& b, const Point3& c, const Point3& d, const Point3& e) {
-  const predicates::FilteredSign f = predicates::insphere_filtered(a, b, c, d, e);
-  if (predicates::is_certain(f)) [[likely]]
-    return predicates::to_int(f);
+/// The exact and then perturbed stages of insphere_perturbed, out of line (rare: the filter
+/// decides almost every test; kept apart so that the filter inlines into its caller).
+[[gnu::noinline, gnu::cold]] inline int insphere_perturbed_exact(const Point3& a, const Point3& b, const Point3& c,
+                                                                 const Point3& d, const Point3& e) {
   int s;
   if (!insphere_small_integers(a, b, c, d, e, &s)) s = predicates::to_int(predicates::detail::insphere_exact_stage(a, b, c, d, e));
   if (s != 0) return s;
   if (e == a || e == b || e == c || e == d || a == b || a == c || a == d || b == c || b == d || c == d) return 0;
   const int lifted = insphere_lifted_perturbation(a, b, c, d, e);
   return lifted != 0 ? lifted : predicates::to_int(predicates::insphere_sos(a, b, c, d, e));
+}
+
+/// The perturbed in-sphere sign of e against (a, b, c, d): 0 only when e equals one of them.
+[[gnu::always_inline]] inline int insphere_perturbed(const Point3& a, const Point3& b, const Point3& c, const Point3& d,
+                                                     const Point3& e) {
+  const predicates::FilteredSign f = predicates::insphere_filtered(a, b, c, d, e);
+  if (predicates::is_certain(f)) [[likely]]
+    return predicates::to_int(f);
+  return insphere_perturbed_exact(a, b, c, d, e);
 }
 
 }  // namespace certimesh::generators::detail
