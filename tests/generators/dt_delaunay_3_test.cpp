@@ -21,10 +21,12 @@ using generators::Delaunay3;
 using generators::DelaunayError;
 
 #if defined(__SANITIZE_ADDRESS__)
-constexpr std::size_t uniform_count = 3000, sphere_count = 2000, grid_side = 8;
+constexpr std::size_t uniform_count = 3000, sphere_count = 2000, grid_side = 8, scaled_count = 150;
+constexpr int quintuples = 8000;
 constexpr long sphere_k = 4;
 #else
-constexpr std::size_t uniform_count = 100000, sphere_count = 10000, grid_side = 20;
+constexpr std::size_t uniform_count = 100000, sphere_count = 10000, grid_side = 20, scaled_count = 800;
+constexpr int quintuples = 60000;
 constexpr long sphere_k = 34;
 #endif
 
@@ -100,7 +102,7 @@ TEST(Delaunay3, LiftedPerturbationIsInsphereSos) {
   std::mt19937_64 rng(8);
   std::uniform_int_distribution<std::size_t> pick(0, p.size() - 1);
   int degenerate = 0;
-  for (int k = 0; k < 60000; ++k) {
+  for (int k = 0; k < quintuples; ++k) {
     const P3 &a = p[pick(rng)], &b = p[pick(rng)], &c = p[pick(rng)], &d = p[pick(rng)], &e = p[pick(rng)];
     if (a == b || a == c || a == d || a == e || b == c || b == d || b == e || c == d || c == e || d == e) continue;
     if (predicates::orient3d(a, b, c, d) == predicates::Sign::zero) continue;
@@ -108,13 +110,13 @@ TEST(Delaunay3, LiftedPerturbationIsInsphereSos) {
     degenerate += predicates::insphere(a, b, c, d, e) == predicates::Sign::zero ? 1 : 0;
     ASSERT_EQ(generators::detail::insphere_perturbed(a, b, c, d, e), expected);
   }
-  EXPECT_GT(degenerate, 1000);
+  EXPECT_GT(degenerate, quintuples / 60);
   // Points of an integer sphere (all cospherical) and integers near 2^22 (the 128-bit path's
   // bound), against the kernel's exact insphere where that is not zero.
   const auto sphere = integer_sphere(625 * 34);
   std::uniform_int_distribution<std::size_t> on_sphere(0, sphere.size() - 1);
   std::uniform_int_distribution<long> large(-(1l << 22) + 1, (1l << 22) - 1), near(-3, 3);
-  for (int k = 0; k < 20000; ++k) {
+  for (int k = 0; k < quintuples / 3; ++k) {
     std::array<P3, 5> q;
     if (k % 2 == 0) {
       for (auto& v : q) v = sphere[on_sphere(rng)];
@@ -182,7 +184,7 @@ TEST(Delaunay3, IntegerPointsExactlyOnASphere) {
 }
 
 TEST(Delaunay3, ScalingByPowersOfTwoKeepsTheTetrahedra) {
-  const auto p = uniform(800, 5);
+  const auto p = uniform(scaled_count, 5);
   const auto base = canonical_set(tetrahedra_of(p));
   for (int k : {-600, -30, 1, 40, 700}) {
     std::vector<P3> q = p;
