@@ -193,6 +193,46 @@ TEST(Delaunay3, ScalingByPowersOfTwoKeepsTheTetrahedra) {
   }
 }
 
+// locate: a live tetrahedron whose closure holds the query (exact orientations), or a ghost
+// whose hull face has the query strictly outside; neighbour: symmetric, and `none` exactly on
+// the hull faces the exact checks count.
+TEST(Delaunay3, LocateAndNeighbours) {
+  const auto p = grid(6);
+  const Delaunay3 dt(p);
+  std::mt19937_64 rng(9);
+  std::uniform_real_distribution<double> u(-1.0, 6.0);
+  static constexpr int face[4][3] = {{1, 3, 2}, {0, 2, 3}, {0, 3, 1}, {0, 1, 2}};
+  for (int k = 0; k < 2000; ++k) {
+    // Half the queries on grid planes, where they fall on faces and edges.
+    P3 q{u(rng), u(rng), u(rng)};
+    if (k % 2) q.x = std::round(q.x), q.y = std::round(q.y);
+    const auto t = dt.locate(q);
+    ASSERT_NE(t, Delaunay3::none);
+    const bool inside = q.x >= 0 && q.x <= 5 && q.y >= 0 && q.y <= 5 && q.z >= 0 && q.z <= 5;
+    ASSERT_EQ(dt.is_ghost(t), !inside) << q.x << " " << q.y << " " << q.z;
+    if (!inside) continue;
+    const auto c = dt.vertices(t);
+    for (const auto& f : face)
+      EXPECT_NE(predicates::orient3d(p[c[f[0]]], p[c[f[1]]], p[c[f[2]]], q), predicates::Sign::positive);
+  }
+  std::size_t hull = 0;
+  for (Delaunay3::TetrahedronId t = 0; t < dt.tetrahedron_slot_count(); ++t) {
+    if (!dt.is_live(t)) continue;
+    for (int i = 0; i < 4; ++i) {
+      const auto n = dt.neighbour(t, i);
+      if (n == Delaunay3::none) {
+        ++hull;
+        continue;
+      }
+      int back = 0;
+      for (int j = 0; j < 4; ++j) back += dt.neighbour(n, j) == t ? 1 : 0;
+      EXPECT_EQ(back, 1);
+    }
+  }
+  EXPECT_EQ(hull, 12u * 25u);
+  EXPECT_EQ(dt.locate({std::nan(""), 0, 0}), Delaunay3::none);
+}
+
 TEST(Delaunay3, SmallDegenerateSets) {
   // The cube's corners: 8 cospherical points, 5 or 6 tetrahedra filling it.
   std::vector<P3> cube;
