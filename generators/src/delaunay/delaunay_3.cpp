@@ -274,9 +274,9 @@ void Delaunay3::insert_vertex(VertexId v) {
   if (equal != none) throw_duplicate(equal, v);
   // The cavity: the tetrahedra in conflict with p, reachable from the one holding p (it is
   // in conflict: p lies in its closure and is none of its corners, or strictly beyond its
-  // hull face). A tetrahedron tested and found outside is flagged, so it is tested once.
+  // hull face). A tetrahedron outside next to several cavity faces is tested once for each,
+  // with the same exact answer (flagging it cost more than the repeated tests, which are few).
   cavity_.clear();
-  rejected_.clear();
   boundary_.clear();
   stack_.clear();
   flags_[first] |= cavity_flag;
@@ -286,10 +286,8 @@ void Delaunay3::insert_vertex(VertexId v) {
     dig_cavity(p, v);
   } catch (...) {  // a duplicate point: leave no flag behind
     for (TetrahedronId t : cavity_) flags_[t] = static_cast<std::uint8_t>(flags_[t] & ~cavity_flag);
-    for (TetrahedronId t : rejected_) flags_[t] = static_cast<std::uint8_t>(flags_[t] & ~rejected_flag);
     throw;
   }
-  for (TetrahedronId t : rejected_) flags_[t] = static_cast<std::uint8_t>(flags_[t] & ~rejected_flag);
   fill_star(v);
 }
 
@@ -301,15 +299,11 @@ void Delaunay3::dig_cavity(const Point3& p, VertexId v) {
       const std::uint32_t across = adjacent_[4 * t + i];
       const TetrahedronId n = across / 4;
       if (flags_[n] & cavity_flag) continue;  // a face inside the cavity
-      if (!(flags_[n] & rejected_flag)) {
-        if (conflicts(n, p, v)) {
-          flags_[n] |= cavity_flag;
-          cavity_.push_back(n);
-          stack_.push_back(n);
-          continue;
-        }
-        flags_[n] |= rejected_flag;
-        rejected_.push_back(n);
+      if (conflicts(n, p, v)) {
+        flags_[n] |= cavity_flag;
+        cavity_.push_back(n);
+        stack_.push_back(n);
+        continue;
       }
       const VertexId* c = &corner_[4 * std::size_t{t}];
       boundary_.push_back({{c[face[i][0]], c[face[i][1]], c[face[i][2]]}, across});

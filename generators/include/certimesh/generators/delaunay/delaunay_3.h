@@ -79,7 +79,6 @@ class Delaunay3 {
  private:
   static constexpr std::uint8_t dead_flag = 1u << 0;
   static constexpr std::uint8_t cavity_flag = 1u << 1;    // only during insert_vertex
-  static constexpr std::uint8_t rejected_flag = 1u << 2;  // tested, not in the cavity
 
   struct BoundaryFace {
     std::array<VertexId, 3> corner;  // counterclockwise seen from inside the cavity
@@ -122,13 +121,12 @@ class Delaunay3 {
   Array<VertexId> internal_;        // public id -> internal id
   Array<VertexId> corner_;          // 4 per slot; `none` is the infinite vertex (corner 3 only)
   Array<std::uint32_t> adjacent_;   // 4 per slot: the half-face across, 4 * slot + local
-  Array<std::uint8_t> flags_;       // dead, cavity, rejected
+  Array<std::uint8_t> flags_;       // dead, cavity
   std::vector<TetrahedronId> free_slots_;
   std::size_t live_count_ = 0;
   TetrahedronId last_ = none;       // where the next walk starts
   // Scratch of insert_vertex, kept to avoid reallocation.
   std::vector<TetrahedronId> cavity_;
-  std::vector<TetrahedronId> rejected_;
   std::vector<TetrahedronId> stack_;
   std::vector<BoundaryFace> boundary_;
   std::vector<TetrahedronId> star_;
