@@ -18,6 +18,7 @@
 #include <vector>
 
 #include "bench_delaunay_3d_cgal.h"
+#include "small_flag_main.h"
 #include "certimesh/generators/delaunay/delaunay_3.h"
 #include "certimesh/predicates/volume_sign.h"
 
@@ -124,15 +125,5 @@ BENCHMARK(BM_delaunay3d_certimesh_grid)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_delaunay3d_cgal_grid)->Unit(benchmark::kMillisecond);
 
 int main(int argc, char** argv) {
-  int kept = 1;
-  for (int i = 1; i < argc; ++i) {
-    if (std::string(argv[i]) == "--dt_small") sizes = Sizes{3000, 8};
-    else argv[kept++] = argv[i];
-  }
-  argc = kept;
-  benchmark::Initialize(&argc, argv);
-  if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
-  benchmark::RunSpecifiedBenchmarks();
-  benchmark::Shutdown();
-  return 0;
+  return certimesh::bench::run_benchmarks(argc, argv, "--dt_small", [] { sizes = Sizes{3000, 8}; });
 }
