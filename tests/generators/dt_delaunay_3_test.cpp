@@ -138,7 +138,7 @@ TEST(Delaunay3, UniformPointsAreDelaunay) {
   const auto p = uniform(uniform_count, 1);
   const auto tets = tetrahedra_of(p);
   check_delaunay_3(p, tets);
-  // About 6.5 tetrahedra per point for uniform points (Dwyer's constant 6.77 asymptotically).
+  // About 6.75 tetrahedra per uniform point (Dwyer 1991: 6.77 asymptotically in a convex body).
   EXPECT_GT(tets.size(), 6 * p.size());
   EXPECT_LT(tets.size(), 7 * p.size());
 }
