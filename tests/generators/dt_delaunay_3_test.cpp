@@ -248,6 +248,20 @@ TEST(Delaunay3, SmallDegenerateSets) {
   EXPECT_EQ(otets.size(), 4u);
 }
 
+// Progress: stage "delaunay", non-decreasing, ending at done == total == the point count.
+TEST(Delaunay3, ReportsProgress) {
+  const auto p = uniform(70000, 10);
+  std::vector<std::uint64_t> done;
+  const Delaunay3 dt(p, [&](const generators::Progress& r) {
+    EXPECT_EQ(r.stage, "delaunay");
+    EXPECT_EQ(r.total, p.size());
+    done.push_back(r.done);
+  });
+  ASSERT_GE(done.size(), 2u);
+  EXPECT_TRUE(std::is_sorted(done.begin(), done.end()));
+  EXPECT_EQ(done.back(), p.size());
+}
+
 std::string error_of(const std::vector<P3>& p) {
   try {
     const Delaunay3 dt(p);

@@ -168,7 +168,8 @@ int mesh_point_set_3(const MeshOptions& options, const io::MeshData& points) {
     std::fprintf(stderr, "error: %s: --svg draws 2D meshes; a 3D point set has no picture yet\n", options.domain.c_str());
     return 2;
   }
-  const io::MeshData mesh = generators::delaunay_of_points_3(points);
+  const io::MeshData mesh = generators::delaunay_of_points_3(points, terminal_progress(options.quiet));
+  if (!options.quiet && isatty(STDERR_FILENO)) std::fputs("\r\033[K", stderr);
   const certificate::Report report = certificate::check_mesh(mesh, nullptr);
   std::printf("mesh: %zu vertices, %zu tetrahedra (%zu hull triangles): the Delaunay tetrahedralization of the points\n",
               mesh.point_count(), mesh.tetrahedron_count(), report.statistics.boundary_facets);

@@ -7,11 +7,11 @@
 
 namespace certimesh::generators {
 
-io::MeshData delaunay_of_points_3(const io::MeshData& points) {
+io::MeshData delaunay_of_points_3(const io::MeshData& points, const ProgressCallback& progress) {
   std::vector<Point3> p(points.point_count());
   for (std::size_t i = 0; i < p.size(); ++i)
     p[i] = {points.coordinates[3 * i], points.coordinates[3 * i + 1], points.coordinates[3 * i + 2]};
-  const Delaunay3 dt(p);
+  const Delaunay3 dt(p, progress);
   io::MeshData mesh;
   mesh.dimension = 3;
   mesh.coordinates = points.coordinates;

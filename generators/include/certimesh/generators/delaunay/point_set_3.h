@@ -3,6 +3,7 @@
 // point a vertex).
 #pragma once
 
+#include "certimesh/generators/progress.h"
 #include "certimesh/io/mesh_data.h"
 
 namespace certimesh::generators {
@@ -11,6 +12,7 @@ namespace certimesh::generators {
 /// segments and elements, if any, are ignored): every point a vertex, vertex labels kept,
 /// tetrahedra positive. Throws DelaunayError for a non-finite or repeated point (naming the
 /// indices and the coordinates), for fewer than four points and for points all in one plane.
-io::MeshData delaunay_of_points_3(const io::MeshData& points);
+/// Reports progress as stage "delaunay" (points inserted of all).
+io::MeshData delaunay_of_points_3(const io::MeshData& points, const ProgressCallback& progress = {});
 
 }  // namespace certimesh::generators
