@@ -1,9 +1,11 @@
 // The signs the 3D Delaunay tetrahedralization decides with, as ints: the exact orientation
 // and the perturbed (SoS) in-sphere sign. The filter is inline here, on the hot path; when it
-// is uncertain the kernel's exact stage decides, and for an exact in-sphere zero the lifted
-// terms of insphere_sos's perturbation are evaluated here by exact orientations
-// (insphere_lifted_perturbation; tests/generators/dt_delaunay_3_test.cpp checks it equal to
-// insphere_sos on every degenerate quintuple of a small grid).
+// is uncertain the exact sign comes from 128-bit integers for small-integer points or else
+// from the kernel's exact stage, and for an exact in-sphere zero the lifted terms of
+// insphere_sos's perturbation are evaluated here by exact orientations
+// (insphere_lifted_perturbation). tests/generators/dt_delaunay_3_test.cpp
+// (LiftedPerturbationIsInsphereSos) checks the whole against insphere_sos on random
+// quintuples of a 3 x 3 x 3 grid, of an integer sphere and of integer clusters near 2^21.
 //
 // Why orient3d is exact and not perturbed: the tetrahedralization never holds a flat
 // tetrahedron, so every in-sphere test is against four points off one plane, and then
