@@ -18,6 +18,7 @@
 #include <vector>
 
 #include "bench_delaunay_2d_cgal.h"
+#include "small_flag_main.h"
 #include "certimesh/generators/delaunay/constrained_delaunay_2.h"
 #include "certimesh/predicates/incircle.h"
 #include "certimesh/predicates/orient2d.h"
@@ -146,15 +147,5 @@ BENCHMARK(BM_delaunay2d_certimesh_circle)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_delaunay2d_cgal_circle)->Unit(benchmark::kMillisecond);
 
 int main(int argc, char** argv) {
-  int kept = 1;
-  for (int i = 1; i < argc; ++i) {
-    if (std::string(argv[i]) == "--dt_small") sizes = Sizes{2000, 30, 2000};
-    else argv[kept++] = argv[i];
-  }
-  argc = kept;
-  benchmark::Initialize(&argc, argv);
-  if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
-  benchmark::RunSpecifiedBenchmarks();
-  benchmark::Shutdown();
-  return 0;
+  return certimesh::bench::run_benchmarks(argc, argv, "--dt_small", [] { sizes = Sizes{2000, 30, 2000}; });
 }

@@ -16,6 +16,7 @@
 #include "certimesh/certificate/check_mesh.h"
 #include "certimesh/generators/delaunay/constrained_delaunay_2.h"
 #include "certimesh/generators/delaunay/point_set_2.h"
+#include "certimesh/generators/delaunay/point_set_3.h"
 #include "certimesh/generators/domain/convex_hull_2.h"
 #include "certimesh/generators/domain/default_domains.h"
 #include "certimesh/generators/domain/domain_problem.h"
@@ -160,9 +161,33 @@ io::MeshData convex_hull_domain(const io::MeshData& points) {
 
 // A point set (a .node file: points, no segments): its Delaunay triangulation, the convex hull
 // meshed as Triangle does for a .node, certified against the hull before anything is written.
+// A 3D point set: its Delaunay tetrahedralization, the convex hull as TetGen meshes a .node,
+// certified (a valid tetrahedral mesh, no domain) before anything is written.
+int mesh_point_set_3(const MeshOptions& options, const io::MeshData& points) {
+  if (!options.svg.empty()) {  // refused before anything is written, not after the mesh
+    std::fprintf(stderr, "error: %s: --svg draws 2D meshes; a 3D point set has no picture yet\n", options.domain.c_str());
+    return 2;
+  }
+  const io::MeshData mesh = generators::delaunay_of_points_3(points, terminal_progress(options.quiet));
+  if (!options.quiet && isatty(STDERR_FILENO)) std::fputs("\r\033[K", stderr);
+  const certificate::Report report = certificate::check_mesh(mesh, nullptr);
+  std::printf("mesh: %zu vertices, %zu tetrahedra (%zu hull triangles): the Delaunay tetrahedralization of the points\n",
+              mesh.point_count(), mesh.tetrahedron_count(), report.statistics.boundary_facets);
+  std::printf("quality 6^4*sqrt(2)*volume/perimeter^3: worst %.3g\ncertificate: %s\n", report.statistics.worst_quality,
+              report.valid ? "valid, a conforming mesh of positive tetrahedra" : "INVALID");
+  if (!report.valid) {
+    std::fprintf(stderr, "error: internal: the tetrahedralization fails its certificate: %s (nothing written)\n",
+                 report.finding.message.c_str());
+    return 3;
+  }
+  write_outputs(options, mesh, points, report);
+  return 0;
+}
+
 int mesh_point_set(const MeshOptions& options, const io::MeshData& points) {
+  if (points.dimension == 3) return mesh_point_set_3(options, points);
   if (points.dimension != 2) {
-    std::fprintf(stderr, "error: %s: a %d-dimensional point set: only 2D point sets are meshed so far\n",
+    std::fprintf(stderr, "error: %s: a %d-dimensional point set: only 2D and 3D point sets are meshed\n",
                  options.domain.c_str(), points.dimension);
     return 2;
   }

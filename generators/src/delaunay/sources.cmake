@@ -6,4 +6,6 @@ target_sources(certimesh_generators PRIVATE
   ${CMAKE_CURRENT_LIST_DIR}/delaunay_refinement_2.cpp
   ${CMAKE_CURRENT_LIST_DIR}/quality_refinement_2.cpp
   ${CMAKE_CURRENT_LIST_DIR}/point_set_2.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/delaunay_3.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/point_set_3.cpp
 )

@@ -23,6 +23,7 @@
 #include <string>
 #include <vector>
 
+#include "certimesh/generators/delaunay/delaunay_error.h"
 #include "certimesh/generators/delaunay/large_array.h"
 #include "certimesh/generators/domain/planar_domain.h"
 #include "certimesh/generators/progress.h"
@@ -31,14 +32,6 @@
 namespace certimesh::generators {
 
 using predicates::Point2;
-
-/// Thrown for input the triangulation cannot take: non-finite or duplicate points, or a
-/// constraint that crosses another constraint or passes through a vertex. The message names
-/// the ids involved.
-class DelaunayError : public std::runtime_error {
- public:
-  using std::runtime_error::runtime_error;
-};
 
 class ConstrainedDelaunay2 {
  public:
