@@ -1,4 +1,3 @@
-#include <cstdlib>
 #include "improvement_region.h"
 
 #include <algorithm>
@@ -87,12 +86,11 @@ RegionImprovementStats improve_bad_region(TriangleSoup& m, std::span<const Domai
     }
   }
   ImprovementOptions2 bounded = options;
-  if (bounded.max_operations == 0) bounded.max_operations = static_cast<std::uint64_t>((std::getenv("CM_OPS") ? std::atof(std::getenv("CM_OPS")) : double(kOperationsPerTriangle)) * double(stats.region_triangles));
+  if (bounded.max_operations == 0) bounded.max_operations = kOperationsPerTriangle * stats.region_triangles;
   // The k-th worst element costs O(k) to reach (quality_order.h): a basket of 7 % of a large
   // region would make every iteration O(N). A fixed basket keeps iterations O(log N + 256).
   if (bounded.basket_size == 0) bounded.basket_size = kBasketSize;
   if (bounded.stall_iterations == 0) bounded.stall_iterations = stats.region_triangles / kStallFraction + kStallFloor;
-  if (const char* st = std::getenv("CM_STALL")) bounded.stall_iterations = static_cast<std::uint64_t>(std::atof(st) * double(stats.region_triangles)) + 1000;
   if (bounded.max_baskets == 0) {
     bounded.max_baskets = static_cast<std::uint32_t>(std::min<std::uint64_t>(stats.region_triangles / kBasketSize + 2, 1u << 20));
   }
