@@ -129,7 +129,7 @@ void insert_isolated_vertices(TriangleSoup& mesh, std::span<const DomainSegment>
     bool at_vertex = false;
     for (const std::uint32_t t : hosts)
       for (const std::uint32_t w : mesh.triangles[t])
-        if (mesh.points[w] == p) replaced[w] = v, at_vertex = true;
+        if (mesh.points[w] == p) replaced[w] = v, pinned[w] = 1, at_vertex = true;  // w is v now: never removed
     if (at_vertex) continue;  // the generated vertex there becomes the isolated one
     interior.push_back(v);
     // A generated vertex much closer to p than the triangles are long would leave a sliver
