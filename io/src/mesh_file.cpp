@@ -9,6 +9,8 @@
 #include "certimesh/io/format_error.h"
 #include "certimesh/io/gmsh_format.h"
 #include "certimesh/io/medit_format.h"
+#include "certimesh/io/off_format.h"
+#include "certimesh/io/stl_format.h"
 #include "certimesh/io/triangle_format.h"
 #include "certimesh/io/vtu_format.h"
 
@@ -20,9 +22,11 @@ Format format_of(const std::filesystem::path& path) {
   if (ext == ".mesh") return Format::medit;
   if (ext == ".msh") return Format::gmsh;
   if (ext == ".vtu") return Format::vtu;
+  if (ext == ".off") return Format::off;
+  if (ext == ".stl") return Format::stl;
   throw FormatError(path.string(), 0,
                     "unknown mesh format '" + ext +
-                        "' (known: .node .ele .face .poly .smesh .mesh .msh .vtu)");
+                        "' (known: .node .ele .face .poly .smesh .mesh .msh .vtu .off .stl)");
 }
 
 MeshData read_mesh(const std::filesystem::path& path) {
@@ -31,6 +35,8 @@ MeshData read_mesh(const std::filesystem::path& path) {
     case Format::medit: return read_medit_format(path);
     case Format::gmsh: return read_gmsh_format(path);
     case Format::vtu: return read_vtu_format(path);
+    case Format::off: return read_off_format(path);
+    case Format::stl: return read_stl_format(path);
   }
   throw FormatError(path.string(), 0, "unreachable format");
 }
@@ -70,6 +76,8 @@ void write_mesh(const MeshData& mesh, const std::filesystem::path& path) {
     case Format::medit: write_medit_format(mesh, path); return;
     case Format::gmsh: write_gmsh_format(mesh, path); return;
     case Format::vtu: write_vtu_format(mesh, path); return;
+    case Format::off:
+    case Format::stl: throw FormatError(path.string(), 0, "certimesh reads " + path.extension().string() + " surfaces but does not write them (write .mesh, .msh, .vtu or .poly)");
   }
 }
 

@@ -3,6 +3,8 @@
 //   .mesh                                Medit (INRIA), ASCII           medit_format.h
 //   .msh                                 Gmsh 4.1, ASCII                gmsh_format.h
 //   .vtu                                 VTK XML unstructured grid      vtu_format.h
+//   .off                                 OFF surface, read only         off_format.h
+//   .stl                                 STL ASCII/binary, read only    stl_format.h
 // Every failure is a FormatError "FILE:LINE: why"; a failed write leaves no partial file.
 #pragma once
 
@@ -13,7 +15,7 @@
 
 namespace certimesh::io {
 
-enum class Format { triangle, medit, gmsh, vtu };
+enum class Format { triangle, medit, gmsh, vtu, off, stl };
 
 /// The format an extension names; throws FormatError (line 0) for an unknown extension.
 Format format_of(const std::filesystem::path& path);
