@@ -85,6 +85,11 @@ int run_mesh(const MeshOptions& options);
 /// or unwritable output.
 int run_domain(const std::string& script_path, const std::string& output);
 
+/// `certimesh check-surface SURFACE`: reads a closed surface (.mesh .off .stl .poly .smesh) and
+/// validates it exactly (docs/surface_input.md). Returns 0 valid (counts printed), 1 invalid
+/// (each problem on stderr as `error: SURFACE: ...`), 2 unreadable.
+int run_check_surface(const std::string& path);
+
 /// `certimesh demo`: the classroom failures of naive floating point, and certimesh's answers.
 int run_demo();
 

@@ -131,6 +131,31 @@ std::string check_help() {
          "unreadable input (a missing file is named).\n";
 }
 
+std::string check_surface_help() {
+  return "usage: certimesh check-surface SURFACE\n"
+         "\n"
+         "Validates a closed triangulated surface, the input of 3D meshing, exactly (every\n"
+         "decision an exact predicate; docs/surface_input.md):\n"
+         "  SURFACE              .mesh (its Triangles), .off (0-based; polygons must be planar\n"
+         "                       and convex), .stl (ASCII or binary, told apart by size; corners\n"
+         "                       with equal coordinates welded), .poly/.smesh (TetGen: one\n"
+         "                       planar convex polygon per facet; orientation ignored, every\n"
+         "                       shell turned outward)\n"
+         "  -h, --help           this text\n"
+         "\n"
+         "Refused, each problem on standard error as `error: SURFACE: ...` naming the triangles\n"
+         "(0-based) and their corners: duplicate vertices, zero-area or repeated triangles, open\n"
+         "edges, non-manifold edges (3 or more triangles that do not alternate around the edge),\n"
+         "two triangles running their common edge the same way, and every pair of triangles\n"
+         "meeting beyond their shared vertices (touching included; at most 10 listed, all\n"
+         "counted). A valid surface prints its counts: vertices, triangles, shells, and of the\n"
+         "shells the solids (winding number 0 outside), cavities (0 inside) and interfaces. The\n"
+         "solid is where the winding number is non-zero: an inward shell inside an outward one\n"
+         "is a cavity; a lone shell is a solid whichever way it is oriented.\n"
+         "\n"
+         "exit status: 0 valid; 1 invalid surface; 2 usage error or unreadable file.\n";
+}
+
 std::string convert_help() {
   return "usage: certimesh convert IN OUT\n"
          "\n"
@@ -140,6 +165,8 @@ std::string convert_help() {
          "\n"
          "                       (.node/.ele/.face/.poly: Triangle, TetGen; .mesh: Medit;\n"
          "                       .msh: Gmsh 4.1 ASCII; .vtu: VTK XML, for ParaView)\n"
+         "                       IN may also be a surface .off or .stl (read only; STL\n"
+         "                       corners with equal coordinates become one vertex)\n"
          "  -h, --help           this text\n"
          "\n"
          "exit status: 0 written; 2 usage error, unsupported extension, unreadable IN or\n"
@@ -196,6 +223,7 @@ std::string command_help(std::string_view command) {
   if (command == "mesh") return mesh_help();
   if (command == "check") return check_help();
   if (command == "convert") return convert_help();
+  if (command == "check-surface") return check_surface_help();
   if (command == "predicates") return predicates_help();
   if (command == "domain") return domain_help();
   if (command == "demo") return demo_help();

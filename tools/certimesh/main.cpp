@@ -1,5 +1,5 @@
 // certimesh: the command-line tool. Subcommands: demo, predicates, convert, check, mesh,
-// domain. See --help, and COMMAND --help for one command's options (help.cpp).
+// check-surface, domain. See --help, and COMMAND --help for one command's options (help.cpp).
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -39,6 +39,9 @@ constexpr const char* kHelp =
     "                       mesh a 2D domain (.poly, or builtin:plate, builtin:square,\n"
     "                       builtin:two-holes) with triangles; the mesh is certified against\n"
     "                       the domain before anything is written (OUT: .mesh .msh .vtu .node)\n"
+    "  check-surface SURFACE\n"
+    "                       validate a closed triangulated surface exactly (.mesh .off .stl\n"
+    "                       .poly .smesh): counts, or every problem by triangle\n"
     "  domain SCRIPT -o OUT.poly\n"
     "                       constructive geometry: rectangles, discs and polygons combined\n"
     "                       by union, difference, intersection (docs/domains.md)\n"
@@ -64,7 +67,8 @@ constexpr const char* kHelp =
     "on stderr and nothing on stdout; processing continues.\n"
     "\n"
     "exit status: 0 success; 1 some input line was rejected (predicates), the demo found a\n"
-    "disagreement, check found the mesh invalid, or mesh found the domain invalid; 2 usage\n"
+    "disagreement, check found the mesh invalid, mesh found the domain invalid, or\n"
+    "check-surface found the surface invalid; 2 usage\n"
     "error or unreadable input; 3 internal error (a generated mesh failed its certificate);\n"
     "4 mesh written but --min-angle not met (counted on standard error).\n";
 
@@ -229,6 +233,10 @@ int main(int argc, char** argv) {
     return certimesh::cli::run_check(options);
   }
   if (command == "mesh") return parse_and_run_mesh(argc, argv);
+  if (command == "check-surface") {
+    if (argc != 3 || std::string_view(argv[2]).starts_with("-")) return usage_error("check-surface takes one SURFACE file%s", "");
+    return certimesh::cli::run_check_surface(argv[2]);
+  }
   if (command == "domain") {
     if (argc == 5 && std::string_view(argv[3]) == "-o") return certimesh::cli::run_domain(argv[2], argv[4]);
     return usage_error("domain takes SCRIPT -o OUT.poly%s", "");

@@ -9,4 +9,6 @@ target_sources(certimesh_generators PRIVATE
   ${CMAKE_CURRENT_LIST_DIR}/constructive_geometry_2.cpp
   ${CMAKE_CURRENT_LIST_DIR}/exact_snap.cpp
   ${CMAKE_CURRENT_LIST_DIR}/convex_hull_2.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/surface_3.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/surface_validation_3.cpp
 )
