@@ -84,7 +84,10 @@ struct OffParser {
     const std::size_t vertex_count = in.read_count("vertex count", 6);  // "0 0 0\n" at least
     const std::size_t face_count = in.read_count("face count", 8);      // "3 0 1 2\n"
     in.read_integer("edge count", 0, std::numeric_limits<std::int64_t>::max());  // ignored, as every reader does
-    in.check_count_fits("vertex and face counts", vertex_count + face_count, 6);
+    // "0 0 0\n" per vertex and "3 0 1 2\n" per face at least, the last line break optional.
+    if (6 * vertex_count + 8 * face_count > in.remaining_bytes() + 1)
+      in.fail(std::to_string(vertex_count) + " vertices and " + std::to_string(face_count) + " faces cannot fit in the " +
+              std::to_string(in.remaining_bytes()) + " bytes left in the file");
     read_vertices(vertex_count);
     faces.reserve(face_count);
     for (std::size_t f = 0; f < face_count; ++f) read_face(vertex_count);
