@@ -11,3 +11,8 @@ foreach(_interop gmsh_reads_certimesh certimesh_reads_gmsh meshio_reads_certimes
                    ${CMAKE_CURRENT_BINARY_DIR}/interop/${_interop} ${CMAKE_CURRENT_SOURCE_DIR}/data/gmsh)
   set_tests_properties(io.interop_${_interop} PROPERTIES SKIP_RETURN_CODE 77 TIMEOUT 300 LABELS "io;interop")
 endforeach()
+# The surface readers (.off, ASCII/binary .stl, .mesh) against meshio as writer and reader.
+add_test(NAME io.surface_meshio
+         COMMAND ${CERTIMESH_IO_INTEROP_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/surface_meshio_test.py $<TARGET_FILE:certimesh>
+                 ${CMAKE_CURRENT_BINARY_DIR}/interop/surface_meshio)
+set_tests_properties(io.surface_meshio PROPERTIES SKIP_RETURN_CODE 77 TIMEOUT 300 LABELS "io;interop")

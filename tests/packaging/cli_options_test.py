@@ -26,6 +26,7 @@ OPTIONS = {
     "predicates": [("--mode", "exact", True), ("--line-buffered", None, True)],
     "convert": [],
     "domain": [("-o", "out.poly", False)],
+    "check-surface": [],
     "demo": [],
 }
 MESH_OUTPUTS = [".mesh", ".msh", ".vtu", ".node", ".ele"]
