@@ -3,6 +3,8 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
+#include <limits>
 #include <numeric>
 #include <queue>
 #include <string>
@@ -262,10 +264,51 @@ class Validator {
     return predicates::triangle_triangle_3d(a, b, predicates::IntersectionMode::exact) == predicates::Overlap::intersect;
   }
 
+  // Columns of a grid over the two axes other than the sweep axis: a triangle is listed in
+  // every column its box meets, so two triangles whose boxes overlap share a column; the pair
+  // is tested only in the column of the low corner of their boxes' overlap (it is in both
+  // lists: the column index is a monotone function of the coordinate). The column width starts
+  // at twice the median box size and doubles until the lists hold at most 8N + 64 entries, so
+  // memory stays O(N) whatever the shapes.
+  struct Columns {
+    std::size_t u = 0, w = 0;  // the two axes of the grid
+    double lo_u = 0, lo_w = 0, width = 1;
+    std::uint64_t count_u = 1, count_w = 1;
+    std::uint64_t of(double x, double lo, std::uint64_t count) const {
+      const double c = std::floor((x - lo) / width);
+      return c <= 0 ? 0 : c >= double(count - 1) ? count - 1 : static_cast<std::uint64_t>(c);
+    }
+    std::uint64_t cu(double x) const { return of(x, lo_u, count_u); }
+    std::uint64_t cw(double x) const { return of(x, lo_w, count_w); }
+  };
+
+  Columns columns_for(const std::vector<Box>& boxes, const Box& all, std::size_t axis) const {
+    Columns c;
+    c.u = (axis + 1) % 3, c.w = (axis + 2) % 3;
+    c.lo_u = all.lo[c.u], c.lo_w = all.lo[c.w];
+    const double span = std::max(all.hi[c.u] - all.lo[c.u], all.hi[c.w] - all.lo[c.w]);
+    std::vector<double> sizes;
+    sizes.reserve(boxes.size());
+    for (const Box& b : boxes) sizes.push_back(std::max(b.hi[c.u] - b.lo[c.u], b.hi[c.w] - b.lo[c.w]));
+    std::nth_element(sizes.begin(), sizes.begin() + std::ptrdiff_t(sizes.size() / 2), sizes.end());
+    c.width = 2 * sizes[sizes.size() / 2];
+    if (!(c.width > 0) || !std::isfinite(span) || !(span > 0) || !std::isfinite(c.width)) c.width = std::isfinite(span) && span > 0 ? span : 1;
+    c.width = std::max(c.width, span / double(1 << 20));  // at most 2^20 columns per axis
+    for (;;) {
+      c.count_u = static_cast<std::uint64_t>(std::floor((all.hi[c.u] - all.lo[c.u]) / c.width)) + 1;
+      c.count_w = static_cast<std::uint64_t>(std::floor((all.hi[c.w] - all.lo[c.w]) / c.width)) + 1;
+      std::uint64_t entries = 0;
+      for (const Box& b : boxes) entries += (c.cu(b.hi[c.u]) - c.cu(b.lo[c.u]) + 1) * (c.cw(b.hi[c.w]) - c.cw(b.lo[c.w]) + 1);
+      if (entries <= 8 * boxes.size() + 64 || (c.count_u == 1 && c.count_w == 1)) return c;
+      c.width *= 2;
+    }
+  }
+
   void stage_intersections() {
     const std::size_t n = s_.triangles.size();
     std::vector<Box> boxes(n);
-    Box all{{1e308, 1e308, 1e308}, {-1e308, -1e308, -1e308}};
+    constexpr double inf = std::numeric_limits<double>::infinity();
+    Box all{{inf, inf, inf}, {-inf, -inf, -inf}};
     for (std::uint32_t t = 0; t < n; ++t) {
       boxes[t] = box_of(t);
       for (std::size_t a = 0; a < 3; ++a) all.lo[a] = std::min(all.lo[a], boxes[t].lo[a]), all.hi[a] = std::max(all.hi[a], boxes[t].hi[a]);
@@ -273,19 +316,31 @@ class Validator {
     std::size_t axis = 0;
     for (std::size_t a = 1; a < 3; ++a)
       if (all.hi[a] - all.lo[a] > all.hi[axis] - all.lo[axis]) axis = a;
-    std::vector<std::uint32_t> order(n);
-    std::iota(order.begin(), order.end(), 0u);
-    std::sort(order.begin(), order.end(), [&](std::uint32_t a, std::uint32_t b) { return std::tie(boxes[a].lo[axis], a) < std::tie(boxes[b].lo[axis], b); });
+    const Columns grid = columns_for(boxes, all, axis);
+    // (column, triangle) entries, by column and then by the box's start along the sweep axis.
+    std::vector<std::pair<std::uint64_t, std::uint32_t>> entries;
+    for (std::uint32_t t = 0; t < n; ++t)
+      for (std::uint64_t i = grid.cu(boxes[t].lo[grid.u]); i <= grid.cu(boxes[t].hi[grid.u]); ++i)
+        for (std::uint64_t j = grid.cw(boxes[t].lo[grid.w]); j <= grid.cw(boxes[t].hi[grid.w]); ++j) entries.push_back({i * grid.count_w + j, t});
+    std::sort(entries.begin(), entries.end(), [&](const auto& a, const auto& b) {
+      return std::tie(a.first, boxes[a.second].lo[axis], a.second) < std::tie(b.first, boxes[b.second].lo[axis], b.second);
+    });
     std::priority_queue<std::pair<std::uint32_t, std::uint32_t>> first;  // the cap_ smallest pairs
     std::vector<std::uint32_t> active;
-    for (const std::uint32_t t : order) {
+    for (std::size_t e = 0; e < entries.size(); ++e) {
+      if (e == 0 || entries[e].first != entries[e - 1].first) active.clear();  // a new column
+      const std::uint64_t column = entries[e].first;
+      const std::uint32_t t = entries[e].second;
       std::size_t kept = 0;
       for (const std::uint32_t u : active) {
         if (boxes[u].hi[axis] < boxes[t].lo[axis]) continue;  // ends before t begins: retire it
         active[kept++] = u;
         bool overlap = true;
         for (std::size_t a = 0; a < 3; ++a) overlap = overlap && boxes[u].lo[a] <= boxes[t].hi[a] && boxes[t].lo[a] <= boxes[u].hi[a];
-        if (!overlap || !intersect(t, u)) continue;
+        if (!overlap) continue;
+        const std::uint64_t home = grid.cu(std::max(boxes[t].lo[grid.u], boxes[u].lo[grid.u])) * grid.count_w +
+                                   grid.cw(std::max(boxes[t].lo[grid.w], boxes[u].lo[grid.w]));
+        if (home != column || !intersect(t, u)) continue;  // tested in its home column only
         ++out_.intersecting_pairs;
         first.push({std::min(t, u), std::max(t, u)});
         if (first.size() > cap_) first.pop();

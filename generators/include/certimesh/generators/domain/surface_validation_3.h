@@ -17,8 +17,10 @@
 //      (pinches) are valid.
 //   3. self-intersections: every pair of triangles that meet beyond the simplex of their shared
 //      vertices (predicates/intersection/triangle_triangle_3d.h, exact mode): crossings,
-//      touchings, coplanar overlaps of neighbours, folds. Broad phase: sort and sweep of the
-//      triangles' bounding boxes along the longest axis of the whole box.
+//      touchings, coplanar overlaps of neighbours, folds. Broad phase: the triangles' bounding
+//      boxes listed in the columns of a grid over two axes (width: twice the median box,
+//      doubled until the lists hold at most 8N + 64 entries), then sort and sweep along the
+//      third (the longest axis of the whole box) within each column.
 //   4. shells (classes of triangles joined across edges): an unoriented shell is made coherent
 //      (non_orientable if it cannot be) and then turned outward; every shell gets its
 //      orientation (+1 outward: the winding number is 1 just inside) and the winding numbers of
@@ -27,12 +29,13 @@
 //      inward is its solid, an inward shell inside an outward one (or an outward one inside an
 //      inward one) bounds a cavity, two nested shells of one orientation are an interface.
 //
-// Cost, worst case (N triangles, V vertices, S shells, K pairs of triangles whose boxes
-// overlap along the sweep axis): O(V log V + N log N) for stages 1-2; O(N log N + K) box
-// tests and one exact triangle-triangle test per pair whose boxes overlap, for stage 3 -- K is
-// N(N-1)/2 when every box spans the sweep axis (N long thin parallel triangles): quadratic,
-// and so is a vertex in N triangles (all its pairs are tested); O(S N) for stage 4 (a ray per
-// shell against every triangle whose box it can cross). Memory O(N + V).
+// Cost, worst case (N triangles, V vertices, S shells, K pairs of triangles listed in a common
+// column and overlapping along the sweep axis): O(V log V + N log N) for stages 1-2;
+// O(N log N + K) box tests and one exact triangle-triangle test per pair whose boxes overlap,
+// for stage 3 -- K is N(N-1)/2 when every box meets every other (N long thin triangles across
+// the whole model): quadratic, and so is a vertex in N triangles (all its pairs are tested);
+// O(S N) for stage 4 (a ray per shell against every triangle whose box it can cross). Memory
+// O(N + V) (the column lists are capped at 8N + 64 entries).
 #pragma once
 
 #include <cstddef>
