@@ -6,7 +6,9 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <algorithm>
 #include <limits>
+#include <utility>
 #include <string>
 
 #include "certimesh/generators/domain/surface_validation_3.h"
@@ -288,8 +290,9 @@ TEST(surf_Invalid, FoldOfTwoNeighbours) {
 
 TEST(surf_Adversarial, LongThinTrianglesWhoseBoxesAllOverlap) {
   // N slivers spanning the whole x range, stacked in z: every pair of boxes overlaps along
-  // the sweep axis (the quadratic case). Closed as thin prisms: each sliver is a tetrahedron
-  // of its own, disjoint from the others -- valid; then one is tilted to cross its neighbour.
+  // the sweep axis (the grid columns over y and z keep them apart). Each sliver is a
+  // tetrahedron of its own, disjoint from the others -- valid; then one is tilted to cross its
+  // neighbour.
   constexpr int n = 60;
   SurfaceBuilder b;
   for (int i = 0; i < n; ++i) {
@@ -305,6 +308,31 @@ TEST(surf_Adversarial, LongThinTrianglesWhoseBoxesAllOverlap) {
   for (const auto& p : c.problems) {
     const std::uint32_t a = p.triangles[0] / 4, d = p.triangles[1] / 4;
     EXPECT_TRUE((a == 10 && d == 11) || (a == 11 && d == 10) || a == d) << p.message;
+  }
+}
+
+TEST(surf_Adversarial, SliversWhoseBoxesAllOverlapEachOther) {
+  // Translates by (2i 0 0) of one sliver K = hull{(0 0 0), (1 0 0), (0.5 0.5 0), (1000 1000
+  // 1000)}: K's width along x is at most 1 everywhere, so translates 2 apart are disjoint, yet
+  // every box is [2i, 2i + 1000] x [0, 1000]^2 and all of them overlap: every pair goes to the
+  // exact test (the quadratic case of docs/surface_input.md). Then one corner of sliver 10 is
+  // moved onto the base edge of sliver 11, which it then touches.
+  constexpr int n = 150;
+  SurfaceBuilder b;
+  for (int i = 0; i < n; ++i) {
+    const double x = 2.0 * i;
+    b.tetrahedron({x, 0, 0}, {x + 1, 0, 0}, {x + 0.5, 0.5, 0}, {x + 1000, 1000, 1000});
+  }
+  expect_valid(check(b.surface()), n, n, 0, 0);
+  Surface3 s = b.surface();
+  for (Point3& p : s.points)
+    if (p.x == 21 && p.y == 0 && p.z == 0) p.x = 22.5;
+  const SurfaceCheck c = check(s);
+  ASSERT_FALSE(c.problems.empty());
+  for (const auto& p : c.problems) {
+    EXPECT_EQ(p.kind, SurfaceProblemKind::self_intersection);
+    const std::uint32_t first = p.triangles[0] / 4, second = p.triangles[1] / 4;  // the slivers
+    EXPECT_EQ(std::make_pair(std::min(first, second), std::max(first, second)), std::make_pair(10u, 11u)) << p.message;
   }
 }
 
