@@ -58,7 +58,8 @@ TEST_F(CheckSurfaceCommand, OffCubeOfQuads) {
 
 TEST_F(CheckSurfaceCommand, PolyNestedBoxesAreAnInterfaceWhateverTheirFacetOrder) {
   // TetGen reads facets without orientation: both boxes are turned outward, the inner one is
-  // an interface (a cavity there needs a hole point). Some quads listed the other way round.
+  // an interface (the hole point inside it is the mesher's to apply, and is counted). Some
+  // quads listed the other way round.
   std::string points, facets;
   for (int box = 0; box < 2; ++box)
     for (int i = 0; i < 8; ++i) {
@@ -73,9 +74,9 @@ TEST_F(CheckSurfaceCommand, PolyNestedBoxesAreAnInterfaceWhateverTheirFacetOrder
       for (int k = 0; k < 4; ++k) facets += " " + std::to_string(8 * box + quads[q][(q % 2 == 0) ? k : 3 - k]);
       facets += "\n";
     }
-  const fs::path f = write("nested.poly", "16 3 0 0\n" + points + "12 0\n" + facets + "0\n0\n");
+  const fs::path f = write("nested.poly", "16 3 0 0\n" + points + "12 0\n" + facets + "1\n1 1.5 1.5 1.5\n0\n");
   ASSERT_EQ(run("check-surface '" + f.string() + "'"), 0) << err_;
-  EXPECT_NE(out_.find("16 vertices, 24 triangles, 2 shells (1 solids, 0 cavities, 1 interfaces)"), std::string::npos) << out_;
+  EXPECT_NE(out_.find("16 vertices, 24 triangles, 2 shells (1 solids, 0 cavities, 1 interfaces), 1 hole points\n"), std::string::npos) << out_;
 }
 
 TEST_F(CheckSurfaceCommand, FlippedStlTriangleIsNamed) {

@@ -151,7 +151,9 @@ std::string check_surface_help() {
          "counted). A valid surface prints its counts: vertices, triangles, shells, and of the\n"
          "shells the solids (winding number 0 outside), cavities (0 inside) and interfaces. The\n"
          "solid is where the winding number is non-zero: an inward shell inside an outward one\n"
-         "is a cavity; a lone shell is a solid whichever way it is oriented.\n"
+         "is a cavity; a lone shell is a solid whichever way it is oriented. TetGen hole and\n"
+         "region points are counted and passed on (in a .poly/.smesh every shell is turned\n"
+         "outward: nested shells are interfaces, cavities come from hole points).\n"
          "\n"
          "exit status: 0 valid; 1 invalid surface; 2 usage error or unreadable file.\n";
 }

@@ -42,6 +42,9 @@ int run_check_surface(const std::string& path) {
               path.c_str(), surface.points.size() - check.unused_vertices, surface.triangles.size(), check.shells.size(), check.solids,
               check.cavities, check.interfaces);
   if (check.unused_vertices > 0) std::printf(", %zu vertices in no triangle", check.unused_vertices);
+  // TetGen's hole and region points are passed on to the mesher, which locates them.
+  if (!surface.holes.empty()) std::printf(", %zu hole points", surface.holes.size());
+  if (!surface.region_points.empty()) std::printf(", %zu region points", surface.region_points.size());
   std::printf("\n");
   return 0;
 }
