@@ -191,34 +191,39 @@ class Validator {
     std::sort(half.begin(), half.end());
     neighbour_.assign(half.size(), kNone);
     std::vector<SurfaceProblem> found;
+    std::vector<HalfEdge> group;  // reused: one allocation for all edges
     for (std::size_t i = 0, j = 0; i < half.size(); i = j) {
       while (j < half.size() && half[j].lo == half[i].lo && half[j].hi == half[i].hi) ++j;
-      std::vector<HalfEdge> group(half.begin() + std::ptrdiff_t(i), half.begin() + std::ptrdiff_t(j));
+      group.assign(half.begin() + std::ptrdiff_t(i), half.begin() + std::ptrdiff_t(j));
       edge_group(group, found);
     }
     publish(found);
   }
 
   void edge_group(std::vector<HalfEdge>& g, std::vector<SurfaceProblem>& found) {
-    const std::string edge = edge_text(s_, g[0].lo, g[0].hi);
-    std::vector<std::uint32_t> tris;
-    for (const HalfEdge& h : g) tris.push_back(h.triangle);
+    // The texts are built only for a problem: most edges have none.
+    auto edge = [&] { return edge_text(s_, g[0].lo, g[0].hi); };
+    auto tris = [&] {
+      std::vector<std::uint32_t> t;
+      for (const HalfEdge& h : g) t.push_back(h.triangle);
+      return t;
+    };
     if (g.size() == 1) {
-      found.push_back({SurfaceProblemKind::open_edge, tris, {g[0].lo, g[0].hi}, edge + " is open: it is an edge of " + describe_triangle(s_, g[0].triangle) + " only"});
+      found.push_back({SurfaceProblemKind::open_edge, tris(), {g[0].lo, g[0].hi}, edge() + " is open: it is an edge of " + describe_triangle(s_, g[0].triangle) + " only"});
       return;
     }
     if (g.size() == 2) {
       if (s_.oriented && g[0].forward == g[1].forward) {
-        found.push_back({SurfaceProblemKind::inconsistent_orientation, tris, {g[0].lo, g[0].hi},
-                         describe_triangle(s_, g[0].triangle) + " and " + describe_triangle(s_, g[1].triangle) + " run along their common " + edge +
+        found.push_back({SurfaceProblemKind::inconsistent_orientation, tris(), {g[0].lo, g[0].hi},
+                         describe_triangle(s_, g[0].triangle) + " and " + describe_triangle(s_, g[1].triangle) + " run along their common " + edge() +
                              " in the same direction (one of them is the wrong way round)"});
       }
       join(g[0], g[1]);
       return;
     }
-    const std::string lead = edge + " is in " + std::to_string(g.size()) + " triangles (" + triangle_list(g) + ")";
+    const std::string lead = edge() + " is in " + std::to_string(g.size()) + " triangles (" + triangle_list(g) + ")";
     if (!s_.oriented || g.size() % 2 == 1) {
-      found.push_back({SurfaceProblemKind::non_manifold_edge, tris, {g[0].lo, g[0].hi},
+      found.push_back({SurfaceProblemKind::non_manifold_edge, tris(), {g[0].lo, g[0].hi},
                        lead + (s_.oriented ? ": an odd number cannot close up"
                                            : ": in a .poly/.smesh an edge joins 2 facets (interfaces between regions are not supported yet)")});
       return;
@@ -226,7 +231,7 @@ class Validator {
     sort_around_edge(g);
     for (std::size_t i = 0; i < g.size(); ++i) {
       if (g[i].forward == g[(i + 1) % g.size()].forward) {
-        found.push_back({SurfaceProblemKind::non_manifold_edge, tris, {g[0].lo, g[0].hi},
+        found.push_back({SurfaceProblemKind::non_manifold_edge, tris(), {g[0].lo, g[0].hi},
                          lead + " that do not alternate in direction around it: shells may touch along an edge only from outside each other"});
         return;
       }
@@ -510,6 +515,13 @@ class Validator {
 
 SurfaceCheck check_surface(Surface3& surface, std::size_t max_problems) {
   SurfaceCheck out;
+  for (std::uint32_t t = 0; t < surface.triangles.size(); ++t)
+    for (const std::uint32_t v : surface.triangles[t])
+      if (v >= surface.points.size()) {
+        out.problems.push_back({SurfaceProblemKind::vertex_index_out_of_range, {t}, {v},
+                                "triangle " + std::to_string(t) + " names vertex " + std::to_string(v) + ", which does not exist"});
+        return out;
+      }
   Validator(surface, std::max<std::size_t>(max_problems, 1), out).run();
   return out;
 }
