@@ -449,14 +449,20 @@ class Validator {
   }
 
   // The winding number, just in front of the ray triangle t (the side its normal points to), of
-  // the triangles `which` accepts, t's own shell counted.
+  // the triangles of `candidates` that `which` accepts (t's own shell counted when t is one).
   template <class Which>
-  int winding_in_front(std::uint32_t t, Which which) const {
+  int winding_in_front(std::uint32_t t, const std::vector<std::uint32_t>& candidates, Which which) const {
     const Point3 &a = corner(t, 0), &b = corner(t, 1), &c = corner(t, 2);
     int w = 0;
-    for (std::uint32_t T = 0; T < s_.triangles.size(); ++T)
-      if (T != t && which(T)) w += crossing(T, a, b, c);
-    const bool own_in_count = which(t);
+    bool own_in_count = false;
+    for (const std::uint32_t T : candidates) {
+      if (!which(T)) continue;
+      if (T == t) {
+        own_in_count = true;
+        continue;
+      }
+      w += crossing(T, a, b, c);
+    }
     // The ray leaves t towards +x: in front of t if its normal has a positive x component;
     // behind it (where the winding is one more, when t is counted) otherwise.
     if (own_in_count && normal_sign(a, b, c, 0) < 0) --w;
@@ -469,7 +475,7 @@ class Validator {
     // Each shell alone: winding 0 in front of an outward triangle, -1 in front of an inward one.
     for (std::uint32_t k = 0; k < shells; ++k) {
       ray[k] = ray_triangle(k);
-      const int own = winding_in_front(ray[k], [&](std::uint32_t T) { return out_.shell_of[T] == k; });
+      const int own = winding_in_front(ray[k], members_[k], [](std::uint32_t) { return true; });
       out_.shells[k].orientation = own == 0 ? 1 : -1;
       if (!s_.oriented && own != 0) {
         for (const std::uint32_t t : members_[k]) flip(t);
@@ -477,13 +483,31 @@ class Validator {
       }
     }
     s_.oriented = true;
+    // The triangles listed by the grid column (over y and z) that their box meets: a ray along
+    // x from a point p can cross only those listed in p's column.
     std::vector<Box> boxes(s_.triangles.size());
-    for (std::uint32_t t = 0; t < boxes.size(); ++t) boxes[t] = box_of(t);
+    constexpr double inf = std::numeric_limits<double>::infinity();
+    Box all{{inf, inf, inf}, {-inf, -inf, -inf}};
+    for (std::uint32_t t = 0; t < boxes.size(); ++t) {
+      boxes[t] = box_of(t);
+      for (std::size_t a = 0; a < 3; ++a) all.lo[a] = std::min(all.lo[a], boxes[t].lo[a]), all.hi[a] = std::max(all.hi[a], boxes[t].hi[a]);
+    }
+    const Columns grid = columns_for(boxes, all, 0);
+    std::vector<std::pair<std::uint64_t, std::uint32_t>> entries;
+    for (std::uint32_t t = 0; t < boxes.size(); ++t)
+      for (std::uint64_t i = grid.cu(boxes[t].lo[grid.u]); i <= grid.cu(boxes[t].hi[grid.u]); ++i)
+        for (std::uint64_t j = grid.cw(boxes[t].lo[grid.w]); j <= grid.cw(boxes[t].hi[grid.w]); ++j) entries.push_back({i * grid.count_w + j, t});
+    std::sort(entries.begin(), entries.end());
+    std::vector<std::uint32_t> column;
     for (std::uint32_t k = 0; k < shells; ++k) {
       const Point3& a = corner(ray[k], 0);
+      const std::uint64_t home = grid.cu(a.y) * grid.count_w + grid.cw(a.z);
+      column.clear();
+      for (auto e = std::lower_bound(entries.begin(), entries.end(), std::make_pair(home, std::uint32_t{0})); e != entries.end() && e->first == home; ++e)
+        column.push_back(e->second);
       // The other shells' winding number at the ray's start, which is theirs all along shell k
       // (shells cross nowhere); only triangles whose box the ray can reach matter.
-      const int others = winding_in_front(ray[k], [&](std::uint32_t T) {
+      const int others = winding_in_front(ray[k], column, [&](std::uint32_t T) {
         const Box& b = boxes[T];
         return out_.shell_of[T] != k && b.hi[0] >= a.x && b.lo[1] <= a.y && a.y <= b.hi[1] && b.lo[2] <= a.z && a.z <= b.hi[2];
       });

@@ -34,8 +34,9 @@
 // O(N log N + K) box tests and one exact triangle-triangle test per pair whose boxes overlap,
 // for stage 3 -- K is N(N-1)/2 when every box meets every other (N long thin triangles across
 // the whole model): quadratic, and so is a vertex in N triangles (all its pairs are tested);
-// O(S N) for stage 4 (a ray per shell against every triangle whose box it can cross). Memory
-// O(N + V) (the column lists are capped at 8N + 64 entries).
+// O(S N) for stage 4 (a ray per shell against the triangles listed in its grid column over y
+// and z, all N when every box meets that column: nested shells round one axis). Memory O(N + V)
+// (the column lists are capped at 8N + 64 entries).
 #pragma once
 
 #include <cstddef>
