@@ -3,9 +3,11 @@
 
 #include <cmath>
 #include <string>
+#include <tuple>
 
 #include "certimesh/generators/domain/surface_problem_3.h"
 #include "certimesh/io/mesh_file.h"
+#include "certimesh/predicates/intersection/segment_segment_2d.h"
 #include "certimesh/predicates/orient2d.h"
 #include "certimesh/predicates/orient3d.h"
 
@@ -36,18 +38,20 @@ int projection_axis(const Point3& a, const Point3& b, const Point3& c) {
   return -1;
 }
 
-int sign_of_difference(double from, double to) { return (to > from) - (to < from); }
-
-// One polygonal facet, weakly convex and planar, cut into triangles on its own corners by
-// clipping strict corners (orientation kept: each triangle is (prev, corner, next)). O(k^2).
-class ConvexFacetCutter {
+// One polygonal facet, planar and simple (collinear corners allowed), cut into triangles on its
+// own corners by ear clipping: a corner is an ear when it turns as the polygon does and no other
+// corner lies in the closed triangle of it and its neighbours. Each triangle is (prev, ear,
+// next): the polygon's orientation is kept. O(k^2): the simplicity test (every pair of edges,
+// exact) and the ears (each clipping re-tests its two neighbours against every corner).
+class PolygonFacetCutter {
  public:
-  ConvexFacetCutter(const std::vector<Point3>& points, std::vector<std::uint32_t> corners, std::size_t facet)
+  PolygonFacetCutter(const std::vector<Point3>& points, std::vector<std::uint32_t> corners, std::size_t facet)
       : points_(points), corners_(std::move(corners)), facet_(facet) {}
 
   std::vector<std::array<std::uint32_t, 3>> cut() {
     check_planar();
-    check_convex();
+    for (std::size_t i = 0; i < k(); ++i) flat_.push_back(drop(at(i), axis_));
+    check_simple();
     return clip();
   }
 
@@ -56,8 +60,9 @@ class ConvexFacetCutter {
     refuse(SurfaceProblemKind::bad_facet, "facet " + std::to_string(facet_) + " " + why);
   }
   const Point3& at(std::size_t i) const { return points_[corners_[i]]; }
-  Point2 flat(std::size_t i) const { return drop(at(i), axis_); }
   std::size_t k() const { return corners_.size(); }
+  std::string corner_text(std::size_t i) const { return std::to_string(corners_[i]) + " " + format_point(at(i)); }
+  int orient(std::size_t a, std::size_t b, std::size_t c) const { return static_cast<int>(predicates::orient2d(flat_[a], flat_[b], flat_[c])); }
 
   void check_planar() {
     std::size_t third = 2;
@@ -68,66 +73,56 @@ class ConvexFacetCutter {
     if (axis_ < 0) bad("has all its corners on one line");
     for (std::size_t i = 2; i < k(); ++i)
       if (predicates::orient3d(at(0), at(1), at(third), at(i)) != Sign::zero)
-        bad("is not planar: corner " + std::to_string(corners_[i]) + " " + format_point(at(i)) + " is off the plane of its corners " +
-            std::to_string(corners_[0]) + ", " + std::to_string(corners_[1]) + ", " + std::to_string(corners_[third]));
+        bad("is not planar: corner " + corner_text(i) + " is off the plane of its corners " + std::to_string(corners_[0]) + ", " +
+            std::to_string(corners_[1]) + ", " + std::to_string(corners_[third]));
   }
 
-  // The turn at corner i of the current polygon (prev, i, next): +1/-1, 0 straight; 2 a U-turn.
-  int turn(std::size_t p, std::size_t i, std::size_t n) const {
-    const Sign s = predicates::orient2d(flat(p), flat(i), flat(n));
-    if (s != Sign::zero) return static_cast<int>(s);
-    const Point2 a = flat(p), b = flat(i), c = flat(n);
-    const bool straight = sign_of_difference(a.x, b.x) == sign_of_difference(b.x, c.x) && sign_of_difference(a.y, b.y) == sign_of_difference(b.y, c.y);
-    return straight ? 0 : 2;
+  // No two edges meet beyond the corner they share (exact; in the projection, which is
+  // one-to-one on the facet's plane); then the turn at the lowest corner is the orientation.
+  void check_simple() {
+    auto edge = [&](std::size_t i) {
+      const std::size_t j = (i + 1) % k();
+      return std::array<predicates::Vertex2, 2>{predicates::Vertex2{flat_[i], corners_[i]}, predicates::Vertex2{flat_[j], corners_[j]}};
+    };
+    for (std::size_t i = 0; i < k(); ++i)
+      for (std::size_t j = i + 1; j < k(); ++j)
+        if (predicates::segment_segment_2d(edge(i), edge(j), predicates::IntersectionMode::exact) == predicates::Overlap::intersect)
+          bad("is not a simple polygon: its edges from corners " + corner_text(i) + " and " + corner_text(j) + " meet");
+    std::size_t lowest = 0;
+    for (std::size_t i = 1; i < k(); ++i)
+      if (std::tie(flat_[i].x, flat_[i].y) < std::tie(flat_[lowest].x, flat_[lowest].y)) lowest = i;
+    orientation_ = orient((lowest + k() - 1) % k(), lowest, (lowest + 1) % k());
+    if (orientation_ == 0) bad("cannot be oriented");  // impossible for a simple polygon
   }
 
-  // Weakly convex and simple: every turn the same sign or straight, and the edge directions go
-  // round once (the sign of dy changes exactly twice around the polygon).
-  void check_convex() {
-    int changes = 0, first = 0, last = 0;
-    for (std::size_t i = 0; i < k(); ++i) {
-      const int t = turn((i + k() - 1) % k(), i, (i + 1) % k());
-      if (t == 2) bad("turns back on itself at corner " + std::to_string(corners_[i]) + " " + format_point(at(i)));
-      if (t != 0 && orientation_ == 0) orientation_ = t;
-      if (t != 0 && t != orientation_)
-        bad("is not convex at corner " + std::to_string(corners_[i]) + " " + format_point(at(i)) +
-            " (non-convex polygonal facets are not supported yet: split it into convex facets or triangles)");
-      const int dy = sign_of_difference(flat(i).y, flat((i + 1) % k()).y);
-      if (dy == 0) continue;
-      if (first == 0) first = dy;
-      if (last != 0 && dy != last) ++changes;
-      last = dy;
-    }
-    if (last != first) ++changes;
-    if (changes != 2) bad("winds round more than once (its edges cross)");
+  bool is_ear(std::size_t v) const {
+    const std::size_t p = prev_[v], n = next_[v];
+    if (orient(p, v, n) != orientation_) return false;
+    for (std::size_t x = next_[n]; x != p; x = next_[x])
+      if (orient(p, v, x) * orientation_ >= 0 && orient(v, n, x) * orientation_ >= 0 && orient(n, p, x) * orientation_ >= 0) return false;
+    return true;
   }
 
   std::vector<std::array<std::uint32_t, 3>> clip() {
-    std::vector<std::size_t> prev(k()), next(k());
-    std::vector<char> strict(k());
-    for (std::size_t i = 0; i < k(); ++i) prev[i] = (i + k() - 1) % k(), next[i] = (i + 1) % k();
-    std::size_t strict_count = 0;
-    for (std::size_t i = 0; i < k(); ++i) strict_count += strict[i] = turn(prev[i], i, next[i]) != 0;
+    prev_.resize(k()), next_.resize(k());
+    for (std::size_t i = 0; i < k(); ++i) prev_[i] = (i + k() - 1) % k(), next_[i] = (i + 1) % k();
+    std::vector<char> ear(k());
+    for (std::size_t i = 0; i < k(); ++i) ear[i] = is_ear(i);
     std::vector<std::array<std::uint32_t, 3>> out;
-    std::size_t remaining = k(), v = 0;
-    while (remaining > 3) {
+    std::size_t v = 0;
+    for (std::size_t remaining = k(); remaining > 3; --remaining) {
       std::size_t tried = 0;
-      for (;; v = next[v], ++tried) {
-        if (tried > remaining) bad("cannot be cut into triangles");
-        if (!strict[v]) continue;
-        const std::size_t p = prev[v], n = next[v];
-        const bool p_strict = turn(prev[p], p, n) != 0, n_strict = turn(p, n, next[n]) != 0;
-        const std::size_t after = strict_count - 1 - strict[p] - strict[n] + p_strict + n_strict;
-        if (after < 3) continue;  // the rest would be a flat chain: clip elsewhere
-        out.push_back({corners_[p], corners_[v], corners_[n]});
-        next[p] = n, prev[n] = p;
-        strict[p] = p_strict, strict[n] = n_strict, strict_count = after;
-        --remaining;
-        v = n;
-        break;
+      while (!ear[v]) {
+        v = next_[v];
+        if (++tried > remaining) bad("cannot be cut into triangles on its corners");
       }
+      const std::size_t p = prev_[v], n = next_[v];
+      out.push_back({corners_[p], corners_[v], corners_[n]});
+      next_[p] = n, prev_[n] = p;
+      ear[p] = is_ear(p), ear[n] = is_ear(n);
+      v = n;
     }
-    out.push_back({corners_[prev[v]], corners_[v], corners_[next[v]]});
+    out.push_back({corners_[prev_[v]], corners_[v], corners_[next_[v]]});
     return out;
   }
 
@@ -136,6 +131,8 @@ class ConvexFacetCutter {
   std::size_t facet_;
   int axis_ = -1;
   int orientation_ = 0;
+  std::vector<Point2> flat_;
+  std::vector<std::size_t> prev_, next_;
 };
 
 void add_facets(const io::MeshData& data, Surface3& s) {
@@ -155,7 +152,7 @@ void add_facets(const io::MeshData& data, Surface3& s) {
     if (corners.size() == 3) {
       cut.push_back({corners[0], corners[1], corners[2]});  // a degenerate one is the validation's to name
     } else {
-      cut = ConvexFacetCutter(s.points, std::move(corners), i).cut();
+      cut = PolygonFacetCutter(s.points, std::move(corners), i).cut();
     }
     for (const auto& t : cut) {
       s.triangles.push_back(t);

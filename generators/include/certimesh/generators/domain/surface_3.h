@@ -3,9 +3,9 @@
 // region points. Built from what the readers return (io::MeshData):
 //   - triangles (Medit .mesh Triangles, .off, .stl, a .face): as given, oriented by corner order;
 //   - TetGen facets (.poly/.smesh, or an OFF file with polygons): each facet cut into triangles
-//     on its own vertices, exactly (surface_3.cpp): a facet must be one planar polygon that is
-//     convex (collinear corners allowed); several polygons, facet holes, isolated points or
-//     segments in a facet, and non-convex polygons are refused as bad_facet (not yet supported).
+//     on its own vertices, exactly (surface_3.cpp): a facet must be one planar simple polygon
+//     (collinear and reflex corners allowed), cut by ear clipping; several polygons, facet
+//     holes, isolated points or segments in a facet are refused as bad_facet (not yet supported).
 // Whether the corner order means anything is `oriented`: true for .mesh, .off, .stl; false for
 // .poly/.smesh, whose facets TetGen reads without orientation (surface_validation_3.h then
 // orients every shell outward).

@@ -16,7 +16,7 @@ enum class SurfaceProblemKind {
   no_triangles,              // nothing to bound a solid
   non_finite_coordinate,
   vertex_index_out_of_range,
-  bad_facet,                 // a polygonal facet certimesh cannot cut into triangles (not planar, not convex, holes)
+  bad_facet,                 // a polygonal facet certimesh cannot cut into triangles (not planar, not simple, holes)
   duplicate_vertices,        // two vertices with identical coordinates
   degenerate_triangle,       // zero area: a repeated corner or three collinear corners (exact)
   duplicate_triangles,       // the same three vertices twice, whatever the order
