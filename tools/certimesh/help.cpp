@@ -91,6 +91,12 @@ std::string mesh_help() {
          "                       Triangle's -c (default: " +
          (d.convex_hull ? "on" : "off") +
          "); --save-domain then writes that domain\n"
+         "  --radius-edge R      3D: refine every tetrahedron whose circumradius exceeds R times\n"
+         "                       its shortest edge, R >= 1, where the circumcentre may go (not\n"
+         "                       outside, not next to a boundary face: the boundary is kept)\n"
+         "                       (default: 2 for a surface; a 3D .node point set is its\n"
+         "                       Delaunay tetrahedralization unless --size or --radius-edge\n"
+         "                       is given, as tetgen without -q; with --size alone R is 2)\n"
          "  --quiet              no progress on a terminal, only the summary (default: " +
          (d.quiet ? "on" : "off") +
          ")\n"

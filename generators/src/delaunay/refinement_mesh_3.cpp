@@ -30,8 +30,9 @@ std::uint64_t edge_key(std::uint32_t a, std::uint32_t b) {
   return (std::uint64_t{a} << 32) | b;
 }
 
-double distance(const Point3& a, const Point3& b) {
-  return std::hypot(a.x - b.x, a.y - b.y, a.z - b.z);
+double squared_distance(const Point3& a, const Point3& b) {
+  const double dx = a.x - b.x, dy = a.y - b.y, dz = a.z - b.z;
+  return dx * dx + dy * dy + dz * dz;
 }
 
 }  // namespace
@@ -147,11 +148,23 @@ RefinementMesh3::Insertion RefinementMesh3::walk(const Point3& p, std::uint32_t 
   return Insertion::walk_too_long;
 }
 
-void RefinementMesh3::grow_cavity(const Point3& p, std::uint32_t seed) {
+// Grows the cavity from the seed; false as soon as a tetrahedron that joins it has a vertex
+// nearer to p than `min_distance` or a constraint face whose (scaled) diametral ball holds
+// p. Every vertex of a cavity tetrahedron ends on the cavity's boundary (shrink_to_star
+// keeps none inside) and every constraint face of one is a boundary face, so checking them
+// as they join refuses exactly what checking the final cavity would, and a little more (what
+// the shrinking would drop), before the expensive part.
+bool RefinementMesh3::grow_cavity(const Point3& p, std::uint32_t seed, double min_distance, double ball_factor) {
+  const double clearance = min_distance * min_distance;
   cavity_.assign(1, seed);
   flags_[seed] |= cavity_flag;
   for (std::size_t k = 0; k < cavity_.size(); ++k) {
     const std::uint32_t t = cavity_[k];
+    const std::uint32_t* c = corners(t);
+    for (int i = 0; i < 4; ++i) {
+      if (squared_distance(points_[c[i]], p) < clearance) return false;
+      if (is_constraint(t, i) && encroaches({t, i}, p, ball_factor)) return false;
+    }
     for (int i = 0; i < 4; ++i) {
       if (is_constraint(t, i)) continue;
       const std::uint32_t n = adjacent_[4 * std::size_t{t} + static_cast<std::size_t>(i)] / 4;
@@ -160,6 +173,7 @@ void RefinementMesh3::grow_cavity(const Point3& p, std::uint32_t seed) {
       cavity_.push_back(n);
     }
   }
+  return true;
 }
 
 void RefinementMesh3::collect_faces() {
@@ -320,22 +334,13 @@ RefinementMesh3::Insertion RefinementMesh3::insert(const Point3& p, std::uint32_
     if (points_[c[k]] == p) return Insertion::on_vertex;
     if (is_constraint(t, k) && side(t, k, p) == 0) return Insertion::on_constraint;
   }
-  grow_cavity(p, t);
+  if (!grow_cavity(p, t, min_distance, ball_factor)) {
+    clear_cavity();
+    return Insertion::too_close;
+  }
   if (!shrink_to_star(p, t)) {
     clear_cavity();
     return Insertion::not_visible;
-  }
-  for (const CavityFace& f : faces_) {
-    if (is_constraint(f.t, f.i) && encroaches(f, p, ball_factor)) {
-      clear_cavity();
-      return Insertion::encroaches;
-    }
-    const std::uint32_t* fc = corners(f.t);
-    for (int k = 0; k < 4; ++k)
-      if (k != f.i && distance(points_[fc[k]], p) < min_distance) {
-        clear_cavity();
-        return Insertion::too_close;
-      }
   }
   fill(p);
   return Insertion::inserted;

@@ -25,8 +25,8 @@ class RefinementMesh3 {
     on_vertex,
     on_constraint,      // the point lies in the plane of a constraint face of its tetrahedron
     not_visible,        // no cavity in which the point sees every face
-    too_close,          // a cavity vertex nearer than the minimum distance
-    encroaches,         // inside the diametral ball of a constraint face of its cavity
+    too_close,          // a cavity vertex nearer than the minimum distance, or inside the
+                        // diametral ball of a constraint face of the cavity
   };
 
   /// Builds the adjacency (faces matched by sorting) and the constraint bits of `mesh`;
@@ -78,7 +78,7 @@ class RefinementMesh3 {
   bool in_sphere(std::uint32_t t, const Point3& p) const;
   bool encroaches(const CavityFace& f, const Point3& p, double ball_factor) const;  // steers only
   Insertion walk(const Point3& p, std::uint32_t start, std::uint32_t* found) const;
-  void grow_cavity(const Point3& p, std::uint32_t seed);
+  bool grow_cavity(const Point3& p, std::uint32_t seed, double min_distance, double ball_factor);
   bool shrink_to_star(const Point3& p, std::uint32_t seed);  // false: the seed itself fails
   void keep_connected(std::uint32_t seed);
   void collect_faces();

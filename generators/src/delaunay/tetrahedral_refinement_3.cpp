@@ -110,6 +110,12 @@ class Refinement {
   // Input vertices: the mean length of their boundary edges (the faces of one tetrahedron).
   void initial_sizes() {
     const std::size_t n = mesh_.vertex_count();
+    low_ = high_ = mesh_.point(0);
+    for (std::uint32_t v = 1; v < n; ++v) {
+      const Point3& p = mesh_.point(v);
+      low_ = {std::min(low_.x, p.x), std::min(low_.y, p.y), std::min(low_.z, p.z)};
+      high_ = {std::max(high_.x, p.x), std::max(high_.y, p.y), std::max(high_.z, p.z)};
+    }
     std::vector<double> sum(n, 0.0);
     std::vector<std::uint32_t> count(n, 0);
     for (std::uint32_t t = 0; t < mesh_.slot_count(); ++t) {
@@ -191,12 +197,15 @@ class Refinement {
   }
 
   bool insert(const Point3& p, std::uint32_t t, double clearance, double ball) {
+    if (!(p.x >= low_.x && p.y >= low_.y && p.z >= low_.z && p.x <= high_.x && p.y <= high_.y && p.z <= high_.z)) {
+      ++stats_.refused_outside;  // outside the input's box: outside the solid, no walk needed
+      return false;
+    }
     switch (mesh_.insert(p, t, clearance, ball)) {
       case Insertion::inserted: break;
       case Insertion::behind_constraint:
       case Insertion::walk_too_long: ++stats_.refused_outside; return false;
-      case Insertion::too_close:
-      case Insertion::encroaches: ++stats_.refused_close; return false;
+      case Insertion::too_close: ++stats_.refused_close; return false;
       default: ++stats_.refused_other; return false;
     }
     ++stats_.inserted;
@@ -227,6 +236,7 @@ class Refinement {
   double smallest_size_ = kInfinity;
   double shortest_input_edge_ = kInfinity;
   double total_volume_ = 0.0;
+  Point3 low_{}, high_{};  // the input's bounding box
 };
 
 }  // namespace
