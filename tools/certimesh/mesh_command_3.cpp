@@ -4,8 +4,10 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <vector>
 
 #include "certimesh/generators/mesh_solid_3.h"
+#include "certimesh/io/svg_cut_3.h"
 #include "certimesh/topology/quality.h"
 #include "mesh_output.h"
 
@@ -31,6 +33,18 @@ Quality3 quality_of(const io::MeshData& m) {
         std::min(q.smallest_dihedral, topology::tetrahedron_min_dihedral_angle(p(c[0]), p(c[1]), p(c[2]), p(c[3])));
   }
   if (m.tetrahedron_count() > 0) q.mean /= static_cast<double>(m.tetrahedron_count());
+  return q;
+}
+
+std::vector<double> qualities(const io::MeshData& m) {
+  std::vector<double> q(m.tetrahedron_count());
+  for (std::size_t t = 0; t < q.size(); ++t) {
+    const io::Index* c = &m.tetrahedra[4 * t];
+    auto p = [&](io::Index v) {
+      return topology::Point3d{m.coordinates[3 * v], m.coordinates[3 * v + 1], m.coordinates[3 * v + 2]};
+    };
+    q[t] = topology::tetrahedron_quality(p(c[0]), p(c[1]), p(c[2]), p(c[3]));
+  }
   return q;
 }
 
@@ -60,10 +74,6 @@ void print_summary_3(const generators::MeshResult3& r, const certificate::Report
 }  // namespace
 
 int mesh_solid_3(const MeshOptions& options, const io::MeshData& input) {
-  if (!options.svg.empty()) {  // refused before anything is written, not after the mesh
-    std::fprintf(stderr, "error: %s: --svg draws 2D meshes; a 3D mesh has no picture yet\n", options.domain.c_str());
-    return 2;
-  }
   generators::MeshOptions3 o;
   o.size = options.size;
   if (options.radius_edge > 0.0) o.max_radius_edge = options.radius_edge;  // else the default, 2
@@ -79,7 +89,10 @@ int mesh_solid_3(const MeshOptions& options, const io::MeshData& input) {
                  report.finding.message.c_str());
     return 3;
   }
-  write_outputs(options, result.mesh, input, report);
+  MeshOptions without_svg = options;  // the 2D picture is not for a 3D mesh: the cut is
+  without_svg.svg.clear();
+  write_outputs(without_svg, result.mesh, input, report);
+  if (!options.svg.empty()) io::write_svg_cut_picture(result.mesh, io::middle_z(result.mesh), qualities(result.mesh), options.svg);
   return 0;
 }
 
