@@ -5,6 +5,8 @@
 #include <cstdlib>
 #include <regex>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "certimesh/io/format_error.h"
 #include "certimesh/io/svg_cut_3.h"
@@ -64,19 +66,21 @@ TEST(SvgPicture, RefusesWhatItCannotDraw) {
 // The cut of tetrahedra by a plane: the corner tetrahedron at z = 1/2 is one triangle (one
 // corner below) with three boundary segments; a tetrahedron with two corners on each side
 // is a quadrilateral (two triangles) with four; the fill follows the given values.
+MeshData one_tetrahedron(std::vector<double> coordinates) {
+  MeshData m;
+  m.dimension = 3;
+  m.coordinates = std::move(coordinates);
+  m.tetrahedra = {0, 1, 2, 3};
+  return m;
+}
+
 TEST(SvgCutPicture, CutPolygonsAndBoundaryTrace) {
-  MeshData corner;
-  corner.dimension = 3;
-  corner.coordinates = {0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1};
-  corner.tetrahedra = {0, 1, 2, 3};
+  const MeshData corner = one_tetrahedron({0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1});
   const std::string one = certimesh::io::svg_cut_picture(corner, 0.5, {1.0});
   EXPECT_EQ(count(one, "<path "), 1u);
   EXPECT_EQ(count(one, "<line "), 3u);
   EXPECT_EQ(count(one, "rgb(0,200,90)"), 1u);  // value 1: green
-  MeshData two_two;
-  two_two.dimension = 3;
-  two_two.coordinates = {0, 0, 0, 1, 0, 0, 0, 1, 1, 0, 0, 1};
-  two_two.tetrahedra = {0, 1, 2, 3};
+  const MeshData two_two = one_tetrahedron({0, 0, 0, 1, 0, 0, 0, 1, 1, 0, 0, 1});
   const std::string quad = certimesh::io::svg_cut_picture(two_two, 0.5, {0.0});
   EXPECT_EQ(count(quad, "<path "), 2u);
   EXPECT_EQ(count(quad, "<line "), 4u);
