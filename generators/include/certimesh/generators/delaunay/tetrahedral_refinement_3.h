@@ -40,23 +40,13 @@
 #include <functional>
 #include <vector>
 
+#include "certimesh/generators/delaunay/solid_mesh_3.h"
 #include "certimesh/generators/progress.h"
-#include "certimesh/io/mesh_data.h"
 #include "certimesh/predicates/point.h"
 
 namespace certimesh::generators {
 
 using predicates::Point3;
-
-/// A tetrahedral mesh of a solid in plain arrays: positive tetrahedra (Medit convention,
-/// design decision 4) over `points`, one label per tetrahedron (empty: all 0).
-struct SolidMesh3 {
-  std::vector<Point3> points;
-  std::vector<std::array<std::uint32_t, 4>> tetrahedra;
-  std::vector<io::Label> labels;
-  /// Interior faces that must stay faces although both sides carry one label.
-  std::vector<std::array<std::uint32_t, 3>> constrained_faces;
-};
 
 /// A size in 3D: a positive finite length at every point of the solid.
 using SizeFunction3 = std::function<double(const Point3&)>;
