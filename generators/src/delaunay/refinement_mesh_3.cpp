@@ -304,14 +304,7 @@ void RefinementMesh3::fill(const Point3& p) {
     }
   }
   live_count_ += pending_.size();
-  std::sort(side_faces_.begin(), side_faces_.end());
-  for (std::size_t k = 0; k + 1 < side_faces_.size(); k += 2) {
-    if (side_faces_[k].first != side_faces_[k + 1].first ||
-        (k + 2 < side_faces_.size() && side_faces_[k + 2].first == side_faces_[k].first))
-      throw std::logic_error("refinement: the cavity's boundary is not a closed surface (a bug)");
-    adjacent_[side_faces_[k].second] = side_faces_[k + 1].second;
-    adjacent_[side_faces_[k + 1].second] = side_faces_[k].second;
-  }
+  match_side_faces();
   link_.clear();
   ++stamp_;
   for (const NewTetrahedron& n : pending_)
@@ -322,6 +315,32 @@ void RefinementMesh3::fill(const Point3& p) {
         link_.push_back(u);
       }
     }
+}
+
+// Links the new tetrahedra's side faces (each holds the new vertex and one edge of the
+// cavity's boundary) in pairs by that edge, through a small open-addressing table: every key
+// is held exactly twice when the cavity was star-shaped (proofs/tetrahedral_refinement_3.md).
+void RefinementMesh3::match_side_faces() {
+  std::size_t size = 16;
+  while (size < 2 * side_faces_.size()) size *= 2;
+  edge_table_.assign(size, {0, none});
+  for (const auto& [key, half_face] : side_faces_) {
+    std::size_t slot = static_cast<std::size_t>((key * 0x9E3779B97F4A7C15ull) >> 40) & (size - 1);
+    while (edge_table_[slot].second != none && edge_table_[slot].first != key) slot = (slot + 1) & (size - 1);
+    auto& entry = edge_table_[slot];
+    if (entry.second == none) {
+      entry = {key, half_face};
+    } else if (entry.second == matched) {
+      throw std::logic_error("refinement: the cavity's boundary is not a closed surface (a bug)");
+    } else {
+      adjacent_[entry.second] = half_face;
+      adjacent_[half_face] = entry.second;
+      entry.second = matched;
+    }
+  }
+  for (const auto& entry : edge_table_)
+    if (entry.second != none && entry.second != matched)
+      throw std::logic_error("refinement: the cavity's boundary is not a closed surface (a bug)");
 }
 
 RefinementMesh3::Insertion RefinementMesh3::insert(const Point3& p, std::uint32_t start, double min_distance,

@@ -84,6 +84,7 @@ class RefinementMesh3 {
   void collect_faces();
   void clear_cavity();
   void fill(const Point3& p);
+  void match_side_faces();
   std::uint32_t new_slot();
 
   std::vector<Point3> points_;
@@ -103,6 +104,8 @@ class RefinementMesh3 {
   std::uint32_t stamp_ = 0;
   std::vector<NewTetrahedron> pending_;
   std::vector<std::pair<std::uint64_t, std::uint32_t>> side_faces_;
+  std::vector<std::pair<std::uint64_t, std::uint32_t>> edge_table_;  // match_side_faces()
+  static constexpr std::uint32_t matched = none - 1;
 };
 
 }  // namespace certimesh::generators::detail

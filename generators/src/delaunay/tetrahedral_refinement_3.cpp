@@ -36,12 +36,16 @@ Shape shape_of(const RefinementMesh3& mesh, std::uint32_t t) {
   const std::uint32_t* c = mesh.corners(t);
   const Point3* p[4] = {&mesh.point(c[0]), &mesh.point(c[1]), &mesh.point(c[2]), &mesh.point(c[3])};
   Shape s;
+  double shortest = kInfinity, longest = 0.0;  // squared
   for (int i = 0; i < 4; ++i)
     for (int j = i + 1; j < 4; ++j) {
-      const double l = length(minus(*p[i], *p[j]));
-      s.shortest = std::min(s.shortest, l);
-      s.longest = std::max(s.longest, l);
+      const Point3 e = minus(*p[i], *p[j]);
+      const double l = dot(e, e);
+      shortest = std::min(shortest, l);
+      longest = std::max(longest, l);
     }
+  s.shortest = std::sqrt(shortest);
+  s.longest = std::sqrt(longest);
   s.centroid = {(p[0]->x + p[1]->x + p[2]->x + p[3]->x) / 4, (p[0]->y + p[1]->y + p[2]->y + p[3]->y) / 4,
                 (p[0]->z + p[1]->z + p[2]->z + p[3]->z) / 4};
   const Point3 u = minus(*p[1], *p[0]), v = minus(*p[2], *p[0]), w = minus(*p[3], *p[0]);
