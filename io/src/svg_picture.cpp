@@ -61,6 +61,8 @@ void append(std::string& out, const char* format, double a, double b) {
 
 std::string svg_picture(const MeshData& mesh, const SvgOptions& options) {
   if (mesh.dimension != 2) throw FormatError("svg", 0, "an SVG picture needs a 2D mesh");
+  if (options.fill_values && options.fill_values->size() != mesh.triangle_count())
+    throw FormatError("svg", 0, "the fill values are not one per triangle");
   for (const Index v : mesh.triangles) {
     if (v >= mesh.point_count()) throw FormatError("svg", 0, "a triangle names vertex " + std::to_string(v) + ", out of range");
   }
@@ -88,8 +90,8 @@ std::string svg_picture(const MeshData& mesh, const SvgOptions& options) {
       append(out, "%.2f %.2f ", f.x(p[static_cast<std::size_t>(2 * i)]), f.y(p[static_cast<std::size_t>(2 * i + 1)]));
     }
     out += "Z\" fill=\"";
-    if (options.colour_by_quality) {
-      const double q = std::clamp(triangle_quality(p), 0.0, 1.0);
+    if (options.fill_values || options.colour_by_quality) {
+      const double q = std::clamp(options.fill_values ? (*options.fill_values)[t] : triangle_quality(p), 0.0, 1.0);
       append(out, "rgb(%.0f,%.0f,90)", 255.0 * (1.0 - q), 200.0 * q);
     } else {
       out += region_fill(mesh.triangle_labels.empty() ? 0 : mesh.triangle_labels[t]);

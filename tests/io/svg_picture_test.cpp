@@ -5,8 +5,11 @@
 #include <cstdlib>
 #include <regex>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "certimesh/io/format_error.h"
+#include "certimesh/io/svg_cut_3.h"
 #include "certimesh/io/svg_picture.h"
 
 namespace {
@@ -59,3 +62,31 @@ TEST(SvgPicture, RefusesWhatItCannotDraw) {
 }
 
 }  // namespace
+
+// The cut of tetrahedra by a plane: the corner tetrahedron at z = 1/2 is one triangle (one
+// corner below) with three boundary segments; a tetrahedron with two corners on each side
+// is a quadrilateral (two triangles) with four; the fill follows the given values.
+MeshData one_tetrahedron(std::vector<double> coordinates) {
+  MeshData m;
+  m.dimension = 3;
+  m.coordinates = std::move(coordinates);
+  m.tetrahedra = {0, 1, 2, 3};
+  return m;
+}
+
+TEST(SvgCutPicture, CutPolygonsAndBoundaryTrace) {
+  const MeshData corner = one_tetrahedron({0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1});
+  const std::string one = certimesh::io::svg_cut_picture(corner, 0.5, {1.0});
+  EXPECT_EQ(count(one, "<path "), 1u);
+  EXPECT_EQ(count(one, "<line "), 3u);
+  EXPECT_EQ(count(one, "rgb(0,200,90)"), 1u);  // value 1: green
+  const MeshData two_two = one_tetrahedron({0, 0, 0, 1, 0, 0, 0, 1, 1, 0, 0, 1});
+  const std::string quad = certimesh::io::svg_cut_picture(two_two, 0.5, {0.0});
+  EXPECT_EQ(count(quad, "<path "), 2u);
+  EXPECT_EQ(count(quad, "<line "), 4u);
+  EXPECT_EQ(count(quad, "rgb(255,0,90)"), 2u);  // value 0: red
+  EXPECT_EQ(count(certimesh::io::svg_cut_picture(corner, 2.0, {1.0}), "<path "), 0u);  // above it all
+  EXPECT_DOUBLE_EQ(certimesh::io::middle_z(corner), 0.5);
+  EXPECT_THROW(certimesh::io::svg_cut_picture(corner, 0.5, {}), certimesh::io::FormatError);
+  EXPECT_THROW(certimesh::io::svg_cut_picture(two_triangles(), 0.5, {}), certimesh::io::FormatError);
+}

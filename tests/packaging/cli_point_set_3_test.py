@@ -5,7 +5,9 @@ with exact fractions -- every point a vertex, every tetrahedron positive, every 
 locally Delaunay (strictly, the points being in general position), every hull face in one
 tetrahedron and the hull closed -- and against TetGen (`tetgen -Q` on the same .node): the
 same tetrahedra for points in general position, where the Delaunay tetrahedralization is
-unique. On an integer grid (cospherical everywhere) the tetrahedra fill the cube exactly. Every
+unique. With --size (Delaunay refinement, item 5) the input points come first, bit for bit,
+every tetrahedron is positive, the hull faces are the unrefined ones (no point on the
+boundary) and the volume is the hull's, exactly. On an integer grid (cospherical everywhere) the tetrahedra fill the cube exactly. Every
 written mesh passes `certimesh check`. Bad point sets (a NaN, a repeated point, all points in
 a plane, three points) are refused with `error:`, a non-zero exit and no file.
 Usage: cli_point_set_3_test.py CERTIMESH [TETGEN].
@@ -90,8 +92,43 @@ def check_tets(points, tets, strict, failures, name):
     return sum(volume6(*(points[v] for v in t)) for t in tets)
 
 
-def mesh(certimesh, node, out):
-    return subprocess.run([certimesh, "mesh", node, "-o", out], capture_output=True, text=True, timeout=120)
+def mesh(certimesh, node, out, *options):
+    return subprocess.run([certimesh, "mesh", node, "-o", out, *options], capture_output=True, text=True, timeout=120)
+
+
+def read_points(node_path):
+    return [tuple(F(x) for x in r[1:4]) for r in read_rows(node_path)[1:]]
+
+
+def hull_faces(points, tets):
+    faces = {}
+    for t in tets:
+        for i in range(4):
+            faces.setdefault(frozenset(points[t[j]] for j in FACES[i]), []).append(t)
+    return {f for f, held in faces.items() if len(held) == 1}
+
+
+def check_refined(certimesh, tmp, node, dt_tets, failures):
+    points = [tuple(F(float(x)) for x in p) for p in read_points(node)]  # as the .node says, exactly
+    out = os.path.join(tmp, "refined.ele")
+    run = mesh(certimesh, node, out, "--size", "0.15")
+    if run.returncode != 0:
+        failures.append(f"refined: mesh exited {run.returncode}: {run.stderr}")
+        return
+    written = [tuple(F(float(x)) for x in p) for p in read_points(out[:-4] + ".node")]
+    tets = read_tets(out)
+    if written[:len(points)] != points:
+        failures.append("refined: the input points are not the first vertices, unchanged")
+    if len(written) <= len(points) + 50:
+        failures.append(f"refined: only {len(written) - len(points)} Steiner points at --size 0.15")
+    volume = check_tets(written, tets, False, failures, "refined")
+    if volume != sum(volume6(*(points[v] for v in t)) for t in dt_tets):
+        failures.append("refined: the volume is not the hull's")
+    if hull_faces(written, tets) != hull_faces(points, dt_tets):
+        failures.append("refined: the hull faces changed (a point on the boundary?)")
+    check = subprocess.run([certimesh, "check", out], capture_output=True, text=True, timeout=60)
+    if check.returncode != 0:
+        failures.append(f"refined: check exited {check.returncode}: {check.stdout} {check.stderr}")
 
 
 def main():
@@ -118,6 +155,7 @@ def main():
             if check.returncode != 0:
                 failures.append(f"{name}: check of the written mesh exited {check.returncode}: {check.stdout} {check.stderr}")
             if name == "generic":
+                check_refined(certimesh, tmp, node, tets, failures)
                 if not tetgen:
                     failures.append("tetgen not found")
                     continue

@@ -280,3 +280,20 @@ RC_GTEST_PROP(Quality, TriangleQualityIsSimilarityAndPermutationInvariant, ()) {
 
 }  // namespace
 }  // namespace certimesh::topology
+
+// Dihedral angles against closed forms: acos(1/3) for the regular tetrahedron; for the
+// corner tetrahedron 90 degrees at the three axis edges and acos(1/sqrt(3)) between the
+// slanted face and each coordinate plane; 0 for coplanar points.
+TEST(TetrahedronDihedral, ClosedForms) {
+  using certimesh::topology::tetrahedron_min_dihedral_angle;
+  const double deg = 180.0 / std::numbers::pi;
+  const double s = std::sqrt(8.0 / 9.0), t = std::sqrt(2.0 / 9.0), r = std::sqrt(2.0 / 3.0);
+  EXPECT_NEAR(tetrahedron_min_dihedral_angle({0, 0, 1}, {s, 0, -1.0 / 3}, {-t, r, -1.0 / 3}, {-t, -r, -1.0 / 3}),
+              std::acos(1.0 / 3.0) * deg, 1e-9);
+  EXPECT_NEAR(tetrahedron_min_dihedral_angle({0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}),
+              std::acos(1.0 / std::sqrt(3.0)) * deg, 1e-9);
+  EXPECT_EQ(tetrahedron_min_dihedral_angle({0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {1, 1, 0}), 0.0);
+  // A sliver: a unit square's diagonals at heights 0 and 1e-3; the value is numpy's, from the
+  // faces' outward normals (180 - their angle), another formula than the one under test.
+  EXPECT_NEAR(tetrahedron_min_dihedral_angle({0, 0, 0}, {1, 1, 0}, {1, 0, 1e-3}, {0, 1, 1e-3}), 0.1145914635, 1e-8);
+}

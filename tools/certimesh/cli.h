@@ -71,6 +71,7 @@ struct MeshOptions {
   double min_angle = 0.0;    // --min-angle A (degrees); 0: no angle guarantee
   std::uint64_t max_steiner = 4'000'000;  // --max-steiner N: the cap of the --min-angle refinement
   bool convex_hull = false;  // --convex-hull: the convex hull of the points as outer boundary (Triangle's -c)
+  double radius_edge = 0.0;  // --radius-edge R (3D): 0 = unset (surfaces: 2; point sets: no refinement)
 };
 
 /// `certimesh mesh DOMAIN -o OUT ...`: meshes DOMAIN, certifies the mesh with the independent

@@ -28,7 +28,9 @@ std::string mesh_help() {
          "                       Delaunay triangulation of its convex hull, every point a vertex;\n"
          "                       a .node of 3D points as the Delaunay tetrahedralization of its\n"
          "                       convex hull (as TetGen does), every point a vertex, certified as\n"
-         "                       a mesh of positive tetrahedra (no --svg, no other option applies).\n"
+         "                       a mesh of positive tetrahedra; refined inside (never on the hull)\n"
+         "                       when --size or --radius-edge is given; --svg draws its cut by\n"
+         "                       the plane through the middle of the z range, by quality.\n"
          "                       A .poly is read as Triangle reads it: vertices on no segment\n"
          "                       are mesh vertices (dropped when outside the domain), segments\n"
          "                       inside the domain are mesh edges, segments with the domain on\n"
@@ -60,7 +62,9 @@ std::string mesh_help() {
          (d.delaunay ? "delaunay" : "front") +
          ")\n"
          "  --certificate C.json also write the certificate (default: not written)\n"
-         "  --svg PICTURE.svg    also write a picture of the mesh (default: not written)\n"
+         "  --svg PICTURE.svg    also write a picture of the mesh; of a 3D mesh, the tetrahedra\n"
+         "                       cut by z = the middle of its z range, coloured by quality\n"
+         "                       (red 0 to green 1) (default: not written)\n"
          "  --save-domain D.poly also write the domain, for `certimesh check --domain`\n"
          "                       (default: not written)\n"
          "  --no-improve         skip the quality improvement (default: improve " +
@@ -91,6 +95,12 @@ std::string mesh_help() {
          "                       Triangle's -c (default: " +
          (d.convex_hull ? "on" : "off") +
          "); --save-domain then writes that domain\n"
+         "  --radius-edge R      3D: refine every tetrahedron whose circumradius exceeds R times\n"
+         "                       its shortest edge, R >= 1, where the circumcentre may go (not\n"
+         "                       outside, not next to a boundary face: the boundary is kept)\n"
+         "                       (default: 2 for a surface; a 3D .node point set is its\n"
+         "                       Delaunay tetrahedralization unless --size or --radius-edge\n"
+         "                       is given, as tetgen without -q; with --size alone R is 2)\n"
          "  --quiet              no progress on a terminal, only the summary (default: " +
          (d.quiet ? "on" : "off") +
          ")\n"

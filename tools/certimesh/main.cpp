@@ -35,7 +35,7 @@ constexpr const char* kHelp =
     "                       MESH tiles exactly DOMAIN\n"
     "  mesh DOMAIN -o OUT [--size H] [--grading G] [--gamma G] [--algorithm front|delaunay]\n"
     "       [--certificate C.json] [--svg PICTURE.svg] [--save-domain D.poly]\n"
-    "       [--no-improve] [--min-angle A] [--max-steiner N] [--quiet] [--convex-hull]\n"
+    "       [--no-improve] [--min-angle A] [--max-steiner N] [--quiet] [--convex-hull] [--radius-edge R]\n"
     "                       mesh a 2D domain (.poly, or builtin:plate, builtin:square,\n"
     "                       builtin:two-holes) with triangles; the mesh is certified against\n"
     "                       the domain before anything is written (OUT: .mesh .msh .vtu .node)\n"
@@ -130,6 +130,10 @@ int parse_and_run_mesh(int argc, char** argv) {
       const auto n = positive_number(argv[++i]);
       if (!n || *n != std::floor(*n) || *n > 4e9) return usage_error("mesh: --max-steiner needs a whole number in [1, 4e9], got '%s'", argv[i]);
       options.max_steiner = static_cast<std::uint64_t>(*n);
+    } else if (arg == "--radius-edge" && has_value) {
+      const auto r = positive_number(argv[++i]);
+      if (!r || *r < 1.0) return usage_error("mesh: --radius-edge needs a number >= 1, got '%s'", argv[i]);
+      options.radius_edge = *r;
     } else if (arg == "--no-improve") {
       options.improve = false;
     } else if (arg == "--quiet") {

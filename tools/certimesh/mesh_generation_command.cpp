@@ -16,7 +16,6 @@
 #include "certimesh/certificate/check_mesh.h"
 #include "certimesh/generators/delaunay/constrained_delaunay_2.h"
 #include "certimesh/generators/delaunay/point_set_2.h"
-#include "certimesh/generators/delaunay/point_set_3.h"
 #include "certimesh/generators/domain/convex_hull_2.h"
 #include "certimesh/generators/domain/default_domains.h"
 #include "certimesh/generators/domain/domain_problem.h"
@@ -27,6 +26,7 @@
 #include "certimesh/io/svg_picture.h"
 #include "certimesh/predicates/orient2d.h"
 #include "cli.h"
+#include "mesh_output.h"
 
 #ifndef CERTIMESH_VERSION
 #define CERTIMESH_VERSION "unknown"
@@ -50,25 +50,6 @@ PlanarDomain load_domain(const std::string& name) {
     throw std::invalid_argument("unknown built-in domain '" + which + "' (plate, square, two-holes)");
   }
   return generators::planar_domain_from_mesh_data(io::read_mesh(name));
-}
-
-// Progress on standard error, only for a person at a terminal, at most every 0.2 s.
-generators::ProgressCallback terminal_progress(bool quiet) {
-  if (quiet || !isatty(STDERR_FILENO)) return {};
-  auto last = std::make_shared<std::chrono::steady_clock::time_point>();
-  return [last](const generators::Progress& p) {
-    const auto now = std::chrono::steady_clock::now();
-    if (now - *last < std::chrono::milliseconds(200) && p.done != p.total) return;
-    *last = now;
-    if (p.total > 0) {
-      std::fprintf(stderr, "\r%-24.*s %3.0f%%", static_cast<int>(p.stage.size()), p.stage.data(),
-                   100.0 * static_cast<double>(p.done) / static_cast<double>(p.total));
-    } else {
-      std::fprintf(stderr, "\r%-24.*s %llu", static_cast<int>(p.stage.size()), p.stage.data(),
-                   static_cast<unsigned long long>(p.done));
-    }
-    std::fflush(stderr);
-  };
 }
 
 void print_summary(const generators::MeshDomainStats2& s, const certificate::Report& report) {
@@ -119,17 +100,6 @@ int refuse_domain(const std::string& name, const generators::InvalidDomain& e) {
   return 1;
 }
 
-// Writes the mesh and, when asked, its certificate and picture; each file atomically.
-void write_outputs(const MeshOptions& options, const io::MeshData& mesh, const io::MeshData& domain,
-                   const certificate::Report& report) {
-  io::write_mesh(mesh, options.output);
-  if (!options.certificate.empty()) {
-    io::write_file_atomically(options.certificate, certificate::certificate_json(report, CERTIMESH_VERSION));
-  }
-  if (!options.svg.empty()) io::write_svg_picture(mesh, options.svg);
-  if (!options.save_domain.empty()) io::write_mesh(domain, options.save_domain);
-}
-
 // The convex hull of a point set as a domain, for the certificate: Andrew's monotone chain with
 // exact orient2d, points on a hull edge kept as domain vertices (they are mesh vertices). It
 // shares no code with the triangulation it certifies.
@@ -161,31 +131,9 @@ io::MeshData convex_hull_domain(const io::MeshData& points) {
 
 // A point set (a .node file: points, no segments): its Delaunay triangulation, the convex hull
 // meshed as Triangle does for a .node, certified against the hull before anything is written.
-// A 3D point set: its Delaunay tetrahedralization, the convex hull as TetGen meshes a .node,
-// certified (a valid tetrahedral mesh, no domain) before anything is written.
-int mesh_point_set_3(const MeshOptions& options, const io::MeshData& points) {
-  if (!options.svg.empty()) {  // refused before anything is written, not after the mesh
-    std::fprintf(stderr, "error: %s: --svg draws 2D meshes; a 3D point set has no picture yet\n", options.domain.c_str());
-    return 2;
-  }
-  const io::MeshData mesh = generators::delaunay_of_points_3(points, terminal_progress(options.quiet));
-  if (!options.quiet && isatty(STDERR_FILENO)) std::fputs("\r\033[K", stderr);
-  const certificate::Report report = certificate::check_mesh(mesh, nullptr);
-  std::printf("mesh: %zu vertices, %zu tetrahedra (%zu hull triangles): the Delaunay tetrahedralization of the points\n",
-              mesh.point_count(), mesh.tetrahedron_count(), report.statistics.boundary_facets);
-  std::printf("quality 6^4*sqrt(2)*volume/perimeter^3: worst %.3g\ncertificate: %s\n", report.statistics.worst_quality,
-              report.valid ? "valid, a conforming mesh of positive tetrahedra" : "INVALID");
-  if (!report.valid) {
-    std::fprintf(stderr, "error: internal: the tetrahedralization fails its certificate: %s (nothing written)\n",
-                 report.finding.message.c_str());
-    return 3;
-  }
-  write_outputs(options, mesh, points, report);
-  return 0;
-}
-
+// A 3D one goes to the 3D pipeline (mesh_command_3.cpp).
 int mesh_point_set(const MeshOptions& options, const io::MeshData& points) {
-  if (points.dimension == 3) return mesh_point_set_3(options, points);
+  if (points.dimension == 3) return mesh_solid_3(options, points);
   if (points.dimension != 2) {
     std::fprintf(stderr, "error: %s: a %d-dimensional point set: only 2D and 3D point sets are meshed\n",
                  options.domain.c_str(), points.dimension);
@@ -211,6 +159,36 @@ bool is_point_set(const io::MeshData& m) {
 }
 
 }  // namespace
+
+// Progress on standard error, only for a person at a terminal, at most every 0.2 s.
+generators::ProgressCallback terminal_progress(bool quiet) {
+  if (quiet || !isatty(STDERR_FILENO)) return {};
+  auto last = std::make_shared<std::chrono::steady_clock::time_point>();
+  return [last](const generators::Progress& p) {
+    const auto now = std::chrono::steady_clock::now();
+    if (now - *last < std::chrono::milliseconds(200) && p.done != p.total) return;
+    *last = now;
+    if (p.total > 0) {
+      std::fprintf(stderr, "\r%-24.*s %3.0f%%", static_cast<int>(p.stage.size()), p.stage.data(),
+                   100.0 * static_cast<double>(p.done) / static_cast<double>(p.total));
+    } else {
+      std::fprintf(stderr, "\r%-24.*s %llu", static_cast<int>(p.stage.size()), p.stage.data(),
+                   static_cast<unsigned long long>(p.done));
+    }
+    std::fflush(stderr);
+  };
+}
+
+// Writes the mesh and, when asked, its certificate and picture; each file atomically.
+void write_outputs(const MeshOptions& options, const io::MeshData& mesh, const io::MeshData& domain,
+                   const certificate::Report& report) {
+  io::write_mesh(mesh, options.output);
+  if (!options.certificate.empty()) {
+    io::write_file_atomically(options.certificate, certificate::certificate_json(report, CERTIMESH_VERSION));
+  }
+  if (!options.svg.empty()) io::write_svg_picture(mesh, options.svg);
+  if (!options.save_domain.empty()) io::write_mesh(domain, options.save_domain);
+}
 
 int run_mesh(const MeshOptions& options) {
   if (!output_extension_supported(options.output, kMeshOutputExtensions)) return 2;

@@ -99,6 +99,31 @@ double tetrahedron_quality(const Point3d& a, const Point3d& b, const Point3d& c,
   return std::min(1.0, tetrahedron_normaliser * volume / (p * p * p));
 }
 
+double tetrahedron_min_dihedral_angle(const Point3d& a, const Point3d& b, const Point3d& c, const Point3d& d) {
+  if (tetrahedron_volume(a, b, c, d) == 0.0) return 0.0;
+  const Point3d* p[4] = {&a, &b, &c, &d};
+  auto sub = [](const Point3d& u, const Point3d& v) { return Point3d{u[0] - v[0], u[1] - v[1], u[2] - v[2]}; };
+  auto cross = [](const Point3d& u, const Point3d& v) {
+    return Point3d{u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0]};
+  };
+  auto dot = [](const Point3d& u, const Point3d& v) { return u[0] * v[0] + u[1] * v[1] + u[2] * v[2]; };
+  double smallest = 180.0;
+  // The angle at edge (i, j) is between the faces (i, j, k) and (i, j, l): the angle between
+  // the components of k - i and l - i orthogonal to the edge, atan2(|u x v|, u . v).
+  for (int i = 0; i < 4; ++i)
+    for (int j = i + 1; j < 4; ++j) {
+      int k = 0;
+      while (k == i || k == j) ++k;
+      const int l = 6 - i - j - k;
+      const Point3d e = sub(*p[j], *p[i]);
+      const Point3d u = cross(e, sub(*p[k], *p[i])), v = cross(e, sub(*p[l], *p[i]));
+      const Point3d w = cross(u, v);
+      const double angle = std::atan2(std::sqrt(dot(w, w)), dot(u, v)) * (180.0 / std::numbers::pi);
+      smallest = std::min(smallest, angle);
+    }
+  return smallest;
+}
+
 double size_quality_factor(double gamma) {
   if (!(gamma >= 0.0)) throw std::invalid_argument("size_quality_factor: gamma must be >= 0");
   if (gamma == 0.0 || std::isinf(gamma)) return 0.0;

@@ -8,4 +8,6 @@ target_sources(certimesh_generators PRIVATE
   ${CMAKE_CURRENT_LIST_DIR}/point_set_2.cpp
   ${CMAKE_CURRENT_LIST_DIR}/delaunay_3.cpp
   ${CMAKE_CURRENT_LIST_DIR}/point_set_3.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/refinement_mesh_3.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/tetrahedral_refinement_3.cpp
 )

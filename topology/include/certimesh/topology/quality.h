@@ -34,6 +34,10 @@ double triangle_quality(const Point2d& a, const Point2d& b, const Point2d& c);
 double triangle_quality(const Point3d& a, const Point3d& b, const Point3d& c);
 double tetrahedron_quality(const Point3d& a, const Point3d& b, const Point3d& c, const Point3d& d);
 
+/// The smallest of the six interior dihedral angles of a tetrahedron, in degrees (70.53 for
+/// a regular one); exactly 0 when the vertices are coplanar (decided exactly).
+double tetrahedron_min_dihedral_angle(const Point3d& a, const Point3d& b, const Point3d& c, const Point3d& d);
+
 /// F(γ) of (6.1.3): 1 at γ = 1, falling smoothly on both sides; 0 for γ = 0.
 /// Throws std::invalid_argument for a negative or NaN γ.
 double size_quality_factor(double gamma);

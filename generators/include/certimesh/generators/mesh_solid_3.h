@@ -1,0 +1,59 @@
+// The 3D meshing pipeline (issue 13): a solid given by a point set (its convex hull, as TetGen
+// meshes a .node) or, once boundary recovery lands, by a closed surface, tetrahedralized by
+// exact Delaunay and refined to a size and a radius-edge bound. One stage per file in
+// generators/src/pipeline_3; the result carries each stage's time and counts for the CLI.
+//
+//   stage        what it does                                   worst-case cost
+//   delaunay     Delaunay3 of the points (delaunay_3.h)         O(n^2) (n log n expected on
+//                                                               spread points, BRIO order)
+//   refinement   refine_tetrahedra_3 (tetrahedral_refinement_3.h) O(k) expected for k new
+//                                                               points; each walk bounded
+#pragma once
+
+#include <cstdint>
+#include <string_view>
+#include <vector>
+
+#include "certimesh/generators/delaunay/tetrahedral_refinement_3.h"
+#include "certimesh/generators/progress.h"
+#include "certimesh/io/mesh_data.h"
+
+namespace certimesh::generators {
+
+struct MeshOptions3 {
+  /// --size H: the largest edge length wanted; 0: sizes from the boundary's own edges,
+  /// growing by `grading` per unit distance.
+  double size = 0.0;
+  double grading = 0.25;
+  /// --radius-edge R: circumradius over shortest edge above which a tetrahedron is refined.
+  double max_radius_edge = 2.0;
+  /// Refine at all (a point set without --size or --radius-edge is not: its Delaunay
+  /// tetrahedralization is the answer, as `tetgen` without -q gives).
+  bool refine = true;
+  std::uint64_t max_insertions = 0;  // 0: the refinement's own budget
+};
+
+struct StageTime {
+  std::string_view stage;
+  double seconds = 0.0;
+};
+
+struct MeshStats3 {
+  std::size_t input_vertices = 0;
+  std::size_t interior_steiner_points = 0;  // vertices added inside the solid
+  std::size_t boundary_steiner_points = 0;  // vertices added on the boundary (0 by default)
+  TetrahedralRefinementStats refinement;
+  std::vector<StageTime> stages;            // in the order they ran
+};
+
+struct MeshResult3 {
+  io::MeshData mesh;  // dimension 3, positive tetrahedra, input vertices first with their ids
+  MeshStats3 stats;
+};
+
+/// The convex hull of the points of `points` (dimension 3), tetrahedralized and refined.
+/// Throws DelaunayError as delaunay_of_points_3 does.
+MeshResult3 mesh_convex_hull_3(const io::MeshData& points, const MeshOptions3& options,
+                               const ProgressCallback& progress = {});
+
+}  // namespace certimesh::generators

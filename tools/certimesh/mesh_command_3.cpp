@@ -1,0 +1,99 @@
+// `certimesh mesh` in 3D: the pipeline of mesh_solid_3.h, the certificate, the summary a
+// person reads (counts, quality, smallest dihedral angle, Steiner points, time per stage).
+#include <unistd.h>
+
+#include <algorithm>
+#include <cstdio>
+#include <vector>
+
+#include "certimesh/generators/mesh_solid_3.h"
+#include "certimesh/io/svg_cut_3.h"
+#include "certimesh/topology/quality.h"
+#include "mesh_output.h"
+
+namespace certimesh::cli {
+
+namespace {
+
+struct Quality3 {
+  double worst = 1.0, mean = 0.0, smallest_dihedral = 180.0;
+};
+
+Quality3 quality_of(const io::MeshData& m) {
+  Quality3 q;
+  const auto p = [&](io::Index v) {
+    return topology::Point3d{m.coordinates[3 * v], m.coordinates[3 * v + 1], m.coordinates[3 * v + 2]};
+  };
+  for (std::size_t t = 0; t < m.tetrahedron_count(); ++t) {
+    const io::Index* c = &m.tetrahedra[4 * t];
+    const double quality = topology::tetrahedron_quality(p(c[0]), p(c[1]), p(c[2]), p(c[3]));
+    q.worst = std::min(q.worst, quality);
+    q.mean += quality;
+    q.smallest_dihedral =
+        std::min(q.smallest_dihedral, topology::tetrahedron_min_dihedral_angle(p(c[0]), p(c[1]), p(c[2]), p(c[3])));
+  }
+  if (m.tetrahedron_count() > 0) q.mean /= static_cast<double>(m.tetrahedron_count());
+  return q;
+}
+
+std::vector<double> qualities(const io::MeshData& m) {
+  std::vector<double> q(m.tetrahedron_count());
+  for (std::size_t t = 0; t < q.size(); ++t) {
+    const io::Index* c = &m.tetrahedra[4 * t];
+    auto p = [&](io::Index v) {
+      return topology::Point3d{m.coordinates[3 * v], m.coordinates[3 * v + 1], m.coordinates[3 * v + 2]};
+    };
+    q[t] = topology::tetrahedron_quality(p(c[0]), p(c[1]), p(c[2]), p(c[3]));
+  }
+  return q;
+}
+
+void print_summary_3(const generators::MeshResult3& r, const certificate::Report& report, const char* what) {
+  const Quality3 q = quality_of(r.mesh);
+  std::printf("mesh: %zu vertices (%zu input, %zu Steiner inside, %zu on the boundary), %zu tetrahedra (%zu boundary triangles): %s\n",
+              r.mesh.point_count(), r.stats.input_vertices, r.stats.interior_steiner_points,
+              r.stats.boundary_steiner_points, r.mesh.tetrahedron_count(), report.statistics.boundary_facets, what);
+  std::printf("quality 6^4*sqrt(2)*volume/perimeter^3: worst %.4f, mean %.4f; smallest dihedral angle %.2f degrees\n",
+              q.worst, q.mean, q.smallest_dihedral);
+  const generators::TetrahedralRefinementStats& s = r.stats.refinement;
+  if (s.inserted + s.refused_outside + s.refused_close + s.refused_other > 0) {
+    std::printf("refinement: %llu points (%llu circumcentres, %llu centroids); %llu tetrahedra above the radius-edge bound left%s\n",
+                static_cast<unsigned long long>(s.inserted), static_cast<unsigned long long>(s.circumcentres),
+                static_cast<unsigned long long>(s.centroids), static_cast<unsigned long long>(s.skinny_left),
+                s.bound_reached ? " (the insertion budget was reached)" : "");
+  }
+  double total = 0.0;
+  for (const auto& t : r.stats.stages) total += t.seconds;
+  std::printf("time: %.3f s (", total);
+  for (std::size_t i = 0; i < r.stats.stages.size(); ++i)
+    std::printf("%s%.*s %.3f", i ? ", " : "", static_cast<int>(r.stats.stages[i].stage.size()),
+                r.stats.stages[i].stage.data(), r.stats.stages[i].seconds);
+  std::printf(")\ncertificate: %s\n", report.valid ? "valid, a conforming mesh of positive tetrahedra" : "INVALID");
+}
+
+}  // namespace
+
+int mesh_solid_3(const MeshOptions& options, const io::MeshData& input) {
+  generators::MeshOptions3 o;
+  o.size = options.size;
+  if (options.radius_edge > 0.0) o.max_radius_edge = options.radius_edge;  // else the default, 2
+  // A point set is refined only when asked, as `tetgen` refines only with -q or -a.
+  o.refine = options.size > 0.0 || options.radius_edge > 0.0;
+  const generators::MeshResult3 result = generators::mesh_convex_hull_3(input, o, terminal_progress(options.quiet));
+  if (!options.quiet && isatty(STDERR_FILENO)) std::fputs("\r\033[K", stderr);
+  const certificate::Report report = certificate::check_mesh(result.mesh, nullptr);
+  print_summary_3(result, report,
+                  o.refine ? "the convex hull of the points, refined" : "the Delaunay tetrahedralization of the points");
+  if (!report.valid) {
+    std::fprintf(stderr, "error: internal: the tetrahedralization fails its certificate: %s (nothing written)\n",
+                 report.finding.message.c_str());
+    return 3;
+  }
+  MeshOptions without_svg = options;  // the 2D picture is not for a 3D mesh: the cut is
+  without_svg.svg.clear();
+  write_outputs(without_svg, result.mesh, input, report);
+  if (!options.svg.empty()) io::write_svg_cut_picture(result.mesh, io::middle_z(result.mesh), qualities(result.mesh), options.svg);
+  return 0;
+}
+
+}  // namespace certimesh::cli
