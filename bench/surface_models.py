@@ -44,6 +44,7 @@ import math
 import os
 import platform
 import re
+import resource
 import shlex
 import struct
 import subprocess
@@ -392,7 +393,9 @@ def boundary_is_input(points, tets, surface, digits=None):
 # Running the tools
 
 def run(command, timeout, cwd=None):
+    """(completed process with .cpu, its user + system seconds; wall seconds; failure or None)."""
     start = time.perf_counter()
+    before = resource.getrusage(resource.RUSAGE_CHILDREN)
     try:
         r = subprocess.run(command, capture_output=True, text=True, timeout=timeout, cwd=cwd,
                            errors="replace")
@@ -400,6 +403,8 @@ def run(command, timeout, cwd=None):
         return None, timeout, "timeout: no answer after %g s" % timeout
     except OSError as e:
         return None, 0.0, "could not run %s: %s" % (command[0], e)
+    after = resource.getrusage(resource.RUSAGE_CHILDREN)
+    r.cpu = (after.ru_utime - before.ru_utime) + (after.ru_stime - before.ru_stime)
     return r, time.perf_counter() - start, None
 
 
@@ -429,16 +434,19 @@ def measured(result, points, tets, surface):
     return result
 
 
-def run_certimesh(certimesh, model, surface, work, timeout, options=()):
+def run_certimesh(certimesh, model, surface, work, timeout, options=(), check_domain=""):
+    """`certimesh mesh` then `certimesh check OUT --domain D` (D: the model unless given; None:
+    no --domain)."""
     out = os.path.join(work, "certimesh.mesh")
     r, seconds, failure = run([certimesh, "mesh", model, "-o", out, "--quiet"] + list(options), timeout)
-    result = {"seconds": seconds}
+    result = {"seconds": seconds, "cpu": getattr(r, "cpu", None)}
     if failure or r.returncode != 0 or not os.path.exists(out):
         result["error"] = failure or first_error(r)
         return result
     points, tets = read_medit(out)
     measured(result, points, tets, surface)
-    r, _, failure = run([certimesh, "check", out, "--domain", model], timeout)
+    domain = model if check_domain == "" else check_domain
+    r, _, failure = run([certimesh, "check", out] + (["--domain", domain] if domain else []), timeout)
     result["certified"] = bool(r) and r.returncode == 0
     if not result["certified"]:
         result["check_error"] = failure or first_error(r)
@@ -448,7 +456,7 @@ def run_certimesh(certimesh, model, surface, work, timeout, options=()):
 def run_tetgen(smesh, surface, timeout, switches="-pYq1.414"):
     r, seconds, failure = run(["tetgen", switches, smesh], timeout, cwd=os.path.dirname(smesh))
     stem = smesh[:-len(".smesh")] + ".1"
-    result = {"seconds": seconds}
+    result = {"seconds": seconds, "cpu": getattr(r, "cpu", None)}
     if failure or r.returncode != 0 or not os.path.exists(stem + ".ele"):
         result["error"] = failure or first_error(r)
         return result
@@ -460,7 +468,7 @@ def run_gmsh(geo, surface, work, timeout):
     out = os.path.join(work, "gmsh.msh")
     r, seconds, failure = run(["gmsh", "-3", geo, "-o", out, "-format", "msh22",
                                "-setnumber", "Mesh.SaveAll", "1"], timeout, cwd=work)
-    result = {"seconds": seconds}
+    result = {"seconds": seconds, "cpu": getattr(r, "cpu", None)}
     if failure or r.returncode != 0 or not os.path.exists(out):
         result["error"] = failure or first_error(r)
         return result
@@ -546,7 +554,7 @@ def cube_surface(n):
     return Surface(vertices, triangles)
 
 
-def measure_cube(certimesh, tools, n, size, volume, timeout):
+def measure_cube(certimesh, tools, n, size, volume, timeout, point_set=True):
     surface = cube_surface(n)
     out = {"name": "unit cube, 2x%dx%d triangles a face" % (n, n), "notes": [],
            "vertices": len(surface.vertices), "triangles": len(surface.triangles), "enclosed": 1.0}
@@ -559,13 +567,22 @@ def measure_cube(certimesh, tools, n, size, volume, timeout):
         write_off(surface, off)
         smesh = os.path.join(work, "cube.smesh")
         write_smesh(surface, smesh)
-        try:
-            if "certimesh" in tools:
-                out["certimesh"] = run_certimesh(certimesh, off, surface, work, timeout, ["--size", repr(size)])
-            if "tetgen" in tools:
-                out["tetgen"] = run_tetgen(smesh, surface, timeout, "-pYq1.414a%g" % volume)
-        except Exception as e:
-            out.setdefault("certimesh", {})["error"] = "harness: %s: %s" % (type(e).__name__, e)
+        node = os.path.join(work, "cube_vertices.node")
+        with open(node, "w") as f:
+            f.write("%d 3 0 0\n" % len(surface.vertices))
+            for i, p in enumerate(surface.vertices):
+                f.write("%d %.17g %.17g %.17g\n" % (i, *p))
+        runs = {"certimesh": lambda: run_certimesh(certimesh, off, surface, work, timeout, ["--size", repr(size)]),
+                "tetgen": lambda: run_tetgen(smesh, surface, timeout, "-pYq1.414a%g" % volume),
+                "certimesh_points": lambda: run_certimesh(certimesh, node, surface, work, timeout,
+                                                          ["--size", repr(size)], check_domain=None)}
+        for tool in runs:
+            if tool.split("_")[0] not in tools or (tool == "certimesh_points" and not point_set):
+                continue
+            try:
+                out[tool] = runs[tool]()
+            except Exception as e:  # a harness failure is reported in the row, never fatal
+                out[tool] = {"error": "harness: %s: %s" % (type(e).__name__, e)}
     out["cube"] = {"size": size, "volume": volume}
     return out
 
@@ -581,13 +598,20 @@ def without_paths(message):
     return re.sub(r"\S*surface-[^/\s]*/", "", message).replace("|", "\\|")
 
 
+def seconds(d):
+    """Wall seconds, and in parentheses the command's CPU seconds (user + system)."""
+    if "seconds" not in d:
+        return ""
+    return "%.2f (%.2f)" % (d["seconds"], d["cpu"]) if d.get("cpu") is not None else "%.2f" % d["seconds"]
+
+
 def tool_cells(d, with_certified):
     if not d:
         return ["—"] * (8 if with_certified else 7)
     if "error" in d:
-        cells = ["**no**", "%.2f" % d["seconds"] if "seconds" in d else "", "", "", "", ""]
+        cells = ["**no**", seconds(d), "", "", "", ""]
         return cells + ([""] if with_certified else []) + [""]
-    cells = ["yes", "%.2f" % d["seconds"], "%d" % d["tets"], "%d" % d["steiner"],
+    cells = ["yes", seconds(d), "%d" % d["tets"], "%d" % d["steiner"],
              "%.3g" % d["worst"], "%.3g" % d["min_dihedral"]]
     if with_certified:
         cells.append("yes" if d.get("certified") else "**no**")
@@ -604,11 +628,11 @@ def ratio(a, b, key):
 def table(rows):
     head = ["model", "kind", "V / T in"]
     for tool in TOOLS:
-        head += ["%s ok" % tool, "s", "tets", "Steiner", "worst q", "min dih °"]
+        head += ["%s ok" % tool, "s (CPU s)", "tets", "Steiner", "worst q", "min dih °"]
         if tool == "certimesh":
             head.append("certified")
         head.append("surface kept")
-    head += ["time c/t", "tets c/t", "worst q c/t"]
+    head += ["CPU c/t", "tets c/t", "worst q c/t"]
     out = ["| " + " | ".join(head) + " |", "|" + "---|" * len(head)]
     for row in rows:
         if "skip" in row:
@@ -617,7 +641,7 @@ def table(rows):
         for tool in TOOLS:
             cells += tool_cells(row.get(tool), tool == "certimesh")
         c, t = row.get("certimesh"), row.get("tetgen")
-        cells += [ratio(c, t, "seconds"), ratio(c, t, "tets"), ratio(c, t, "worst")]
+        cells += [ratio(c, t, "cpu"), ratio(c, t, "tets"), ratio(c, t, "worst")]
         out.append("| " + " | ".join(cells) + " |")
     notes = []
     for row in rows:
@@ -643,29 +667,38 @@ def table(rows):
     return "\n".join(out) + "\n\nErrors and notes:\n\n" + ("\n".join(notes) if notes else "(none)") + "\n"
 
 
+CUBE_TOOLS = (("certimesh", "certimesh mesh cube.off --size %(size)g"),
+              ("tetgen", "tetgen -pYq1.414a%(volume)g cube.smesh"),
+              ("certimesh_points", "certimesh mesh cube_vertices.node --size %(size)g"))
+
+
 def cube_table(row):
     if row is None:
         return ""
-    out = ["| tool | command | ok | s | tetrahedra | tetrahedra/s | worst q | min dih ° | surface kept |",
-           "|---|---|---|---|---|---|---|---|---|"]
-    commands = {"certimesh": "certimesh mesh cube.off --size %g" % row["cube"]["size"] if "cube" in row else "",
-                "tetgen": "tetgen -pYq1.414a%g cube.smesh" % row["cube"]["volume"] if "cube" in row else ""}
-    for tool in ("certimesh", "tetgen"):
+    out = ["| tool | command | ok | s (CPU s) | tetrahedra | tetrahedra per CPU s | per wall s "
+           "| worst q | min dih ° | surface kept |", "|---|---|---|---|---|---|---|---|---|---|"]
+    for tool, command in CUBE_TOOLS:
         d = row.get(tool)
         if not d:
             continue
+        command = command % row["cube"]
         if "error" in d:
-            out.append("| %s | `%s` | **no** | %.2f | | | | | |" % (tool, commands[tool], d.get("seconds", 0)))
+            out.append("| %s | `%s` | **no** | %s | | | | | | |" % (tool, command, seconds(d)))
             continue
-        out.append("| %s | `%s` | yes | %.2f | %d | %.0f | %.3f | %.2f | %s |" % (
-            tool, commands[tool], d["seconds"], d["tets"], d["tets"] / d["seconds"], d["worst"],
-            d["min_dihedral"], "yes" if d.get("exact_boundary") else "no"))
+        out.append("| %s | `%s` | yes | %s | %d | %s | %.0f | %.3g | %.3g | %s |" % (
+            tool, command, seconds(d), d["tets"], "%.0f" % (d["tets"] / d["cpu"]) if d.get("cpu") else "",
+            d["tets"] / d["seconds"], d["worst"], d["min_dihedral"], "yes" if d.get("exact_boundary") else "no"))
     c, t = row.get("certimesh") or {}, row.get("tetgen") or {}
     text = "%s (%d vertices, %d triangles).\n\n" % (row["name"], row["vertices"], row["triangles"]) + "\n".join(out)
-    if "tets" in c and "tets" in t:
-        text += "\n\nTetrahedra per second, certimesh / TetGen: %.2f.\n" % (
-            (c["tets"] / c["seconds"]) / (t["tets"] / t["seconds"]))
-    for tool in ("certimesh", "tetgen"):
+    if c.get("cpu") and t.get("cpu") and "tets" in c and "tets" in t:
+        text += "\n\nTetrahedra per CPU second, certimesh / TetGen: **%.2f** (per wall second %.2f).\n" % (
+            (c["tets"] / c["cpu"]) / (t["tets"] / t["cpu"]), (c["tets"] / c["seconds"]) / (t["tets"] / t["seconds"]))
+    if "certimesh_points" in row:
+        text += ("\n\n`certimesh_points` is not the issue's command: the cube surface's vertices as a point "
+                 "set, whose convex hull is the cube, meshed by certimesh's 3D point-set path with the "
+                 "same --size (its hull triangulation of the faces need not be the input's). It runs "
+                 "where `certimesh mesh cube.off` does not yet, and shows the refinement's rate.\n")
+    for tool, _ in CUBE_TOOLS:
         d = row.get(tool) or {}
         if "error" in d:
             text += "\n- %s: %s\n" % (tool, without_paths(d["error"]))
@@ -694,8 +727,12 @@ def main():
     parser.add_argument("--all", action="store_true", help="the dropped models too (to show why)")
     parser.add_argument("--no-cube", action="store_true", help="skip the unit cube row")
     parser.add_argument("--cube-n", type=int, default=40, help="cube face grid: 2 n^2 triangles a face")
-    parser.add_argument("--cube-size", type=float, default=0.025, help="certimesh --size for the cube")
-    parser.add_argument("--cube-volume", type=float, default=1.2e-6, help="TetGen -a for the cube")
+    parser.add_argument("--cube-size", type=float, default=0.033, help="certimesh --size for the cube "
+                        "(0.033: about 10^6 tetrahedra by the point-set path of 2026-12-02)")
+    parser.add_argument("--cube-volume", type=float, default=1.7e-6, help="TetGen -a for the cube "
+                        "(1.7e-6: about 10^6 tetrahedra)")
+    parser.add_argument("--no-cube-points", action="store_true",
+                        help="skip the cube's point-set stand-in row")
     parser.add_argument("--describe", help="what certimesh is (default: its --version and commit)")
     args = parser.parse_args()
     tools = [t for t in args.tools.split(",") if t in TOOLS]
@@ -713,7 +750,8 @@ def main():
             file=sys.stderr, flush=True)
     cube = None
     if not args.no_cube and (not args.only or any(o in "cube" for o in args.only)):
-        cube = measure_cube(args.certimesh, tools, args.cube_n, args.cube_size, args.cube_volume, args.timeout)
+        cube = measure_cube(args.certimesh, tools, args.cube_n, args.cube_size, args.cube_volume, args.timeout,
+                            not args.no_cube_points)
         print(cube["name"], file=sys.stderr, flush=True)
     info = provenance(args.certimesh)
     if args.describe:
@@ -723,8 +761,9 @@ def main():
             "```sh\n%s\n```\n\n" % (info["date"], info["certimesh"], info["gmsh"].replace("\n", " "),
                                   info["tetgen"], load_before, info["load"], info["machine"], command)
             + "Seconds are wall clock for the whole command (reading, meshing, writing; not the "
-              "separate `certimesh check`). c/t: certimesh "
-              "over TetGen. \"surface kept\": the boundary faces are the input triangles, one for one, "
+              "separate `certimesh check`), in parentheses its CPU time (user + system, from "
+              "getrusage: what the shared machine's load changes least). c/t: certimesh over "
+              "TetGen, CPU for time. \"surface kept\": the boundary faces are the input triangles, one for one, "
               "on bit-identical vertices.\n\n"
             + table(rows) + "\n" + cube_table(cube))
     planar_examples.publish(text, args.out)
