@@ -271,17 +271,18 @@ def enclosed_volume(s):
 
 
 def self_intersections(smesh, timeout):
-    """`tetgen -d` on the surface: None when no facets intersect, else what it says."""
+    """`tetgen -d` on the surface: (True, what it says) when facets intersect, (False, None) when
+    it finds none, (None, why) when it gave no answer (the model is then meshed, with a note)."""
     r, _, failure = run(["tetgen", "-d", smesh], timeout, cwd=os.path.dirname(smesh))
     if failure:
-        return "tetgen -d: " + failure
+        return None, "tetgen -d: " + failure
     text = r.stdout + r.stderr
     if "No faces are intersecting" in text:
-        return None
+        return False, None
     found = re.search(r"(\d+)\s+(pairs of faces|faces) (are )?intersect\w*", text)
     if found:
-        return "tetgen -d: " + found.group(0)
-    return "tetgen -d: " + first_error(r)
+        return True, "tetgen -d: " + found.group(0)
+    return None, "tetgen -d gave no verdict: " + first_error(r)
 
 
 # ---------------------------------------------------------------------------------------------
@@ -413,13 +414,19 @@ def first_error(r):
         s = line.strip()
         if s.lower().startswith("error") or "invalid:" in s or s.startswith("Abort") or "failed" in s.lower():
             return s
-    if r.returncode < 0:
-        return "killed by signal %d" % -r.returncode
     lines = (r.stderr or r.stdout).strip().splitlines()
+    if r.returncode < 0:
+        return "killed by signal %d%s" % (-r.returncode, " (last line: %s)" % lines[-1].strip() if lines else "")
     return "exit %d: %s" % (r.returncode, lines[-1] if lines else "(no output)")
 
 
 def measured(result, points, tets, surface):
+    if len(tets) == 0 or len(points) == 0:
+        result["error"] = "the output holds no tetrahedra"
+        return result
+    if tets.min() < 0 or tets.max() >= len(points):
+        result["error"] = "the output's tetrahedra name vertices it does not hold"
+        return result
     result.update(tetra_measures(points, tets))
     result["steiner"] = len(points) - len(surface.vertices)
     result["exact_boundary"], reason = boundary_is_input(points, tets, surface)
@@ -502,9 +509,11 @@ def measure(row, certimesh, tools, timeout):
         write_smesh(surface, smesh)
         problems = surface_problems(surface)
         if not problems:
-            crossing = self_intersections(smesh, timeout)
+            crossing, message = self_intersections(smesh, timeout)
             if crossing:
-                problems.append(crossing)
+                problems.append(message)
+            elif message:
+                out["notes"].append("self-intersections not checked: " + message)
         if problems:
             out["skip"] = "invalid surface: " + "; ".join(problems)
             return out
@@ -620,8 +629,9 @@ def tool_cells(d, with_certified):
 
 
 def ratio(a, b, key):
-    if a and b and key in a and key in b and b[key] > 0 and "error" not in a and "error" not in b:
-        return "%.2f" % (a[key] / b[key])
+    x, y = (a or {}).get(key), (b or {}).get(key)
+    if x is not None and y and "error" not in a and "error" not in b:
+        return "%.2f" % (x / y)
     return ""
 
 
