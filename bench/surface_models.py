@@ -686,18 +686,20 @@ def cube_table(row):
     if row is None:
         return ""
     out = ["| tool | command | ok | s (CPU s) | tetrahedra | tetrahedra per CPU s | per wall s "
-           "| worst q | min dih ° | surface kept |", "|---|---|---|---|---|---|---|---|---|---|"]
+           "| worst q | min dih ° | surface kept | certified |", "|---|---|---|---|---|---|---|---|---|---|---|"]
     for tool, command in CUBE_TOOLS:
         d = row.get(tool)
         if not d:
             continue
         command = command % row["cube"]
         if "error" in d:
-            out.append("| %s | `%s` | **no** | %s | | | | | | |" % (tool, command, seconds(d)))
+            out.append("| %s | `%s` | **no** | %s | | | | | | | |" % (tool, command, seconds(d)))
             continue
-        out.append("| %s | `%s` | yes | %s | %d | %s | %.0f | %.3g | %.3g | %s |" % (
+        certified = ("yes" if d["certified"] else "**no**") if "certified" in d else "—"
+        out.append("| %s | `%s` | yes | %s | %d | %s | %.0f | %.3g | %.3g | %s | %s |" % (
             tool, command, seconds(d), d["tets"], "%.0f" % (d["tets"] / d["cpu"]) if d.get("cpu") else "",
-            d["tets"] / d["seconds"], d["worst"], d["min_dihedral"], "yes" if d.get("exact_boundary") else "no"))
+            d["tets"] / d["seconds"], d["worst"], d["min_dihedral"], "yes" if d.get("exact_boundary") else "no",
+            certified))
     c, t = row.get("certimesh") or {}, row.get("tetgen") or {}
     text = "%s (%d vertices, %d triangles).\n\n" % (row["name"], row["vertices"], row["triangles"]) + "\n".join(out)
     if c.get("cpu") and t.get("cpu") and "tets" in c and "tets" in t:
@@ -712,6 +714,8 @@ def cube_table(row):
         d = row.get(tool) or {}
         if "error" in d:
             text += "\n- %s: %s\n" % (tool, without_paths(d["error"]))
+        if "check_error" in d:
+            text += "\n- %s, certimesh check: %s\n" % (tool, without_paths(d["check_error"]))
     return text + "\n"
 
 
