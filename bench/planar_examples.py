@@ -788,6 +788,15 @@ def provenance(certimesh):
     }
 
 
+def publish(text, out):
+    """Print the report, and write it to `out` too when given."""
+    print(text)
+    if out:
+        os.makedirs(os.path.dirname(os.path.abspath(out)), exist_ok=True)
+        with open(out, "w") as f:
+            f.write(text)
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     parser.add_argument("--certimesh", default="build/bin/certimesh")
@@ -812,11 +821,7 @@ def main():
             "```sh\n%s\n```\n\n" % (info["date"], info["certimesh"], info["gmsh"].replace("\n", " "),
                                   load_before, info["load"], info["machine"], command)
             + table(rows, args.time_limit))
-    print(text)
-    if args.out:
-        os.makedirs(os.path.dirname(os.path.abspath(args.out)), exist_ok=True)
-        with open(args.out, "w") as f:
-            f.write(text)
+    publish(text, args.out)
 
 
 if __name__ == "__main__":
