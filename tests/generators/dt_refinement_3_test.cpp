@@ -21,21 +21,21 @@ namespace certimesh {
 namespace {
 
 using generators::Point3;
-using generators::SolidMesh3;
+using generators::Tetrahedralization3;
 using Face = std::array<std::uint32_t, 3>;
 
 constexpr int kFace[4][3] = {{1, 3, 2}, {0, 2, 3}, {0, 3, 1}, {0, 1, 2}};  // outward, positive tet
 
-SolidMesh3 delaunay_of(const std::vector<Point3>& points) {
+Tetrahedralization3 delaunay_of(const std::vector<Point3>& points) {
   const generators::Delaunay3 dt(points);
-  SolidMesh3 m;
+  Tetrahedralization3 m;
   m.points = points;
   m.tetrahedra = dt.tetrahedra();
   return m;
 }
 
 // Faces (oriented outward) held by one tetrahedron, or by two of different labels (each side).
-std::vector<Face> faces_where(const SolidMesh3& m, bool interfaces) {
+std::vector<Face> faces_where(const Tetrahedralization3& m, bool interfaces) {
   std::map<Face, std::vector<std::pair<Face, io::Label>>> by_key;
   for (std::size_t t = 0; t < m.tetrahedra.size(); ++t)
     for (const auto& f : kFace) {
@@ -53,7 +53,7 @@ std::vector<Face> faces_where(const SolidMesh3& m, bool interfaces) {
   return out;
 }
 
-io::MeshData as_mesh(const SolidMesh3& m) {
+io::MeshData as_mesh(const Tetrahedralization3& m) {
   io::MeshData d;
   d.dimension = 3;
   for (const Point3& p : m.points) d.coordinates.insert(d.coordinates.end(), {p.x, p.y, p.z});
@@ -61,7 +61,7 @@ io::MeshData as_mesh(const SolidMesh3& m) {
   return d;
 }
 
-io::MeshData surface_of(const SolidMesh3& m) {
+io::MeshData surface_of(const Tetrahedralization3& m) {
   io::MeshData d;
   d.dimension = 3;
   for (const Point3& p : m.points) d.coordinates.insert(d.coordinates.end(), {p.x, p.y, p.z});
@@ -69,14 +69,14 @@ io::MeshData surface_of(const SolidMesh3& m) {
   return d;
 }
 
-void expect_certified(const SolidMesh3& refined, const io::MeshData& domain) {
+void expect_certified(const Tetrahedralization3& refined, const io::MeshData& domain) {
   const io::MeshData mesh = as_mesh(refined);
   const certificate::Report r = certificate::check_mesh(mesh, &domain);
   EXPECT_TRUE(r.valid) << r.finding.message;
 }
 
 // Boundary faces as coordinate triples: the same set before and after, bit for bit.
-std::set<std::array<double, 9>> boundary_geometry(const SolidMesh3& m) {
+std::set<std::array<double, 9>> boundary_geometry(const Tetrahedralization3& m) {
   std::set<std::array<double, 9>> out;
   for (const Face& f : faces_where(m, false)) {
     std::array<double, 9> g{};
@@ -97,7 +97,7 @@ std::set<std::array<double, 9>> boundary_geometry(const SolidMesh3& m) {
   return out;
 }
 
-double longest_edge(const SolidMesh3& m, std::size_t t) {
+double longest_edge(const Tetrahedralization3& m, std::size_t t) {
   double l = 0;
   for (int i = 0; i < 4; ++i)
     for (int j = i + 1; j < 4; ++j) {
@@ -108,7 +108,7 @@ double longest_edge(const SolidMesh3& m, std::size_t t) {
 }
 
 // Drops the points no tetrahedron uses (the certificate refuses a vertex in no element).
-void compact_points(SolidMesh3& m) {
+void compact_points(Tetrahedralization3& m) {
   std::vector<std::uint32_t> id(m.points.size(), UINT32_MAX);
   std::vector<Point3> kept;
   for (auto& t : m.tetrahedra)
@@ -131,7 +131,7 @@ std::vector<Point3> grid(int n, double step) {
 }
 
 TEST(TetrahedralRefinement3, CubeToUniformSizeIsCertifiedAndKeepsItsBoundary) {
-  SolidMesh3 m = delaunay_of(grid(8, 0.125));
+  Tetrahedralization3 m = delaunay_of(grid(8, 0.125));
   const io::MeshData domain = surface_of(m);
   const auto before = boundary_geometry(m);
   generators::TetrahedralRefinementOptions o;
@@ -164,8 +164,8 @@ TEST(TetrahedralRefinement3, NonConvexSolidWithTwoRegionsKeepsTheInterface) {
   // A 4 x 4 x 4 grid of cells; the solid drops the cells with x > 2 and y > 2 (an L), and the
   // cells with z < 2 are region 1, the others region 2.
   const double s = 0.25;
-  SolidMesh3 all = delaunay_of(grid(4, s));
-  SolidMesh3 m;
+  Tetrahedralization3 all = delaunay_of(grid(4, s));
+  Tetrahedralization3 m;
   m.points = all.points;
   for (const auto& t : all.tetrahedra) {
     Point3 c{};
@@ -195,7 +195,7 @@ TEST(TetrahedralRefinement3, NonConvexSolidWithTwoRegionsKeepsTheInterface) {
 TEST(TetrahedralRefinement3, CoarseBoundaryLimitsRefinementAndTerminates) {
   // 12 boundary triangles and --size far below them: no point may enter the diametral ball
   // of a face, so the mesh stays coarse next to them (as tetgen -pYa does) -- but valid.
-  SolidMesh3 m = delaunay_of(grid(1, 1.0));
+  Tetrahedralization3 m = delaunay_of(grid(1, 1.0));
   const io::MeshData domain = surface_of(m);
   generators::TetrahedralRefinementOptions o;
   o.uniform_size = 0.01;
@@ -205,7 +205,7 @@ TEST(TetrahedralRefinement3, CoarseBoundaryLimitsRefinementAndTerminates) {
 }
 
 TEST(TetrahedralRefinement3, RadiusEdgeBoundHoldsWhereTheBoundaryAllowsIt) {
-  SolidMesh3 m = delaunay_of(grid(8, 0.125));
+  Tetrahedralization3 m = delaunay_of(grid(8, 0.125));
   const io::MeshData domain = surface_of(m);
   generators::TetrahedralRefinementOptions o;
   o.uniform_size = 0.125;
@@ -238,9 +238,9 @@ TEST(TetrahedralRefinement3, RadiusEdgeBoundHoldsWhereTheBoundaryAllowsIt) {
 }
 
 TEST(TetrahedralRefinement3, ScalingByAPowerOfTwoScalesTheMeshExactly) {
-  const SolidMesh3 base = delaunay_of(grid(2, 0.5));
+  const Tetrahedralization3 base = delaunay_of(grid(2, 0.5));
   for (const double scale : {0x1p-30, 0x1p40}) {
-    SolidMesh3 a = base, b = base;
+    Tetrahedralization3 a = base, b = base;
     for (Point3& p : b.points) p = {p.x * scale, p.y * scale, p.z * scale};
     generators::TetrahedralRefinementOptions oa, ob;
     oa.uniform_size = 0.12;
@@ -262,7 +262,7 @@ TEST(TetrahedralRefinement3, ThinSlabTerminatesAndIsCertified) {
   for (int i = 0; i <= 4; ++i)
     for (int j = 0; j <= 4; ++j)
       for (double z : {0.0, 1e-6}) p.push_back({i * 0.25, j * 0.25, z});
-  SolidMesh3 m = delaunay_of(p);
+  Tetrahedralization3 m = delaunay_of(p);
   const io::MeshData domain = surface_of(m);
   generators::TetrahedralRefinementOptions o;  // defaults: sizes from the boundary, R/l 2
   const auto stats = generators::refine_tetrahedra_3(m, o);

@@ -37,7 +37,7 @@ double squared_distance(const Point3& a, const Point3& b) {
 
 }  // namespace
 
-RefinementMesh3::RefinementMesh3(const SolidMesh3& mesh) : points_(mesh.points) {
+RefinementMesh3::RefinementMesh3(const Tetrahedralization3& mesh) : points_(mesh.points) {
   const std::size_t n = mesh.tetrahedra.size();
   corner_.resize(4 * n);
   adjacent_.assign(4 * n, none);
@@ -365,7 +365,7 @@ RefinementMesh3::Insertion RefinementMesh3::insert(const Point3& p, std::uint32_
   return Insertion::inserted;
 }
 
-void RefinementMesh3::export_to(SolidMesh3& mesh) const {
+void RefinementMesh3::export_to(Tetrahedralization3& mesh) const {
   mesh.points = points_;
   mesh.tetrahedra.clear();
   mesh.labels.clear();

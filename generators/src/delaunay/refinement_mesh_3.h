@@ -31,7 +31,7 @@ class RefinementMesh3 {
 
   /// Builds the adjacency (faces matched by sorting) and the constraint bits of `mesh`;
   /// std::invalid_argument for a non-positive tetrahedron or a face in three tetrahedra.
-  explicit RefinementMesh3(const SolidMesh3& mesh);
+  explicit RefinementMesh3(const Tetrahedralization3& mesh);
 
   std::size_t slot_count() const { return flags_.size(); }
   bool is_live(std::uint32_t t) const { return t < flags_.size() && !(flags_[t] & dead_flag); }
@@ -50,7 +50,7 @@ class RefinementMesh3 {
   const std::vector<std::uint32_t>& link() const { return link_; }
 
   /// The live tetrahedra in slot order, their labels, and the points.
-  void export_to(SolidMesh3& mesh) const;
+  void export_to(Tetrahedralization3& mesh) const;
 
  private:
   static constexpr std::uint8_t dead_flag = 1u << 0;

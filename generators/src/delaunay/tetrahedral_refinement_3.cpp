@@ -73,7 +73,7 @@ double volume(const RefinementMesh3& mesh, std::uint32_t t) {
 
 class Refinement {
  public:
-  Refinement(SolidMesh3& mesh, const TetrahedralRefinementOptions& options)
+  Refinement(Tetrahedralization3& mesh, const TetrahedralRefinementOptions& options)
       : input_(mesh), options_(options), mesh_(mesh) {
     initial_sizes();
   }
@@ -230,7 +230,7 @@ class Refinement {
     }
   }
 
-  SolidMesh3& input_;
+  Tetrahedralization3& input_;
   const TetrahedralRefinementOptions& options_;
   RefinementMesh3 mesh_;
   std::vector<double> size_;
@@ -245,7 +245,7 @@ class Refinement {
 
 }  // namespace
 
-TetrahedralRefinementStats refine_tetrahedra_3(SolidMesh3& mesh, const TetrahedralRefinementOptions& options,
+TetrahedralRefinementStats refine_tetrahedra_3(Tetrahedralization3& mesh, const TetrahedralRefinementOptions& options,
                                                const ProgressCallback& progress) {
   Refinement refinement(mesh, options);
   return refinement.run(progress);

@@ -29,7 +29,7 @@ std::vector<Point3> points_of(const io::MeshData& m) {
   return p;
 }
 
-io::MeshData to_mesh_data(const SolidMesh3& solid, const std::vector<io::Label>& input_point_labels) {
+io::MeshData to_mesh_data(const Tetrahedralization3& solid, const std::vector<io::Label>& input_point_labels) {
   io::MeshData mesh;
   mesh.dimension = 3;
   mesh.coordinates.reserve(3 * solid.points.size());
@@ -60,7 +60,7 @@ MeshResult3 mesh_convex_hull_3(const io::MeshData& points, const MeshOptions3& o
                                const ProgressCallback& progress) {
   MeshResult3 result;
   StageClock clock(result.stats);
-  SolidMesh3 solid;
+  Tetrahedralization3 solid;
   solid.points = points_of(points);
   result.stats.input_vertices = solid.points.size();
   solid.tetrahedra = Delaunay3(solid.points, progress).tetrahedra();

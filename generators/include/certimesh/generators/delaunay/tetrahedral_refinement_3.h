@@ -40,7 +40,7 @@
 #include <functional>
 #include <vector>
 
-#include "certimesh/generators/delaunay/solid_mesh_3.h"
+#include "certimesh/generators/delaunay/tetrahedralization_3.h"
 #include "certimesh/generators/progress.h"
 #include "certimesh/predicates/point.h"
 
@@ -74,7 +74,7 @@ struct TetrahedralRefinementStats {
 /// Refines `mesh` in place (points appended, tetrahedra replaced). DelaunayError-free: the
 /// input must be a valid mesh (positive tetrahedra, conforming); std::invalid_argument when a
 /// tetrahedron is not positive or a face is shared by more than two.
-TetrahedralRefinementStats refine_tetrahedra_3(SolidMesh3& mesh, const TetrahedralRefinementOptions& options,
+TetrahedralRefinementStats refine_tetrahedra_3(Tetrahedralization3& mesh, const TetrahedralRefinementOptions& options,
                                                const ProgressCallback& progress = {});
 
 }  // namespace certimesh::generators

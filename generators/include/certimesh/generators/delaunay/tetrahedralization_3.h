@@ -11,7 +11,7 @@
 
 namespace certimesh::generators {
 
-struct SolidMesh3 {
+struct Tetrahedralization3 {
   std::vector<predicates::Point3> points;
   /// Positive tetrahedra (Medit convention, design decision 4) over `points`.
   std::vector<std::array<std::uint32_t, 4>> tetrahedra;
