@@ -41,6 +41,7 @@ class TriangleCrossings {
   /// connected set are connected through shared vertices).
   std::vector<Edge> find() const {
     std::vector<char> visited(m_.mesh.element_slot_count(), 0);
+    std::vector<char> expanded(m_.mesh.vertex_slot_count(), 0);  // vertices whose star was searched
     std::deque<ElementId> queue;
     for (const ElementId t : m_.star(corner_[0])) visited[t.value] = 1, queue.push_back(t);
     std::vector<Edge> crossing;
@@ -53,12 +54,15 @@ class TriangleCrossings {
           if (crosses(c[static_cast<std::size_t>(i)], c[static_cast<std::size_t>(j)]))
             crossing.push_back(std::minmax(c[static_cast<std::size_t>(i)], c[static_cast<std::size_t>(j)],
                                            [](VertexId x, VertexId y) { return x.value < y.value; }));
-      for (const VertexId v : c)
+      for (const VertexId v : c) {
+        if (expanded[v.value]) continue;
+        expanded[v.value] = 1;
         for (const ElementId n : m_.star(v)) {
           if (visited[n.value]) continue;
           visited[n.value] = 1;
           if (may_meet(n)) queue.push_back(n);
         }
+      }
     }
     std::sort(crossing.begin(), crossing.end(),
               [](const Edge& x, const Edge& y) { return std::pair(x.first.value, x.second.value) < std::pair(y.first.value, y.second.value); });

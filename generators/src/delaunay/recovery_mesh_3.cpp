@@ -78,11 +78,65 @@ void RecoveryMesh::set_double_point(VertexId v, const Point3& p, RecoveryVertex:
   mesh.move_vertex(v, {p.x, p.y, p.z});
 }
 
+namespace {
+
+struct Fuzzy {  // a point's approximation and, per coordinate, a bound on its distance to the exact one
+  const Point3* p;
+  double w[3];
+};
+
+Fuzzy fuzzy(const RecoveryVertex& v) {
+  return {&v.approx,
+          {std::max(v.high.x - v.approx.x, v.approx.x - v.low.x), std::max(v.high.y - v.approx.y, v.approx.y - v.low.y),
+           std::max(v.high.z - v.approx.z, v.approx.z - v.low.z)}};
+}
+
+// The sign of det[a - d, b - d, c - d] for inexactly known points when the double evaluation
+// decides it, else 2. Bound: each computed difference C is within
+// delta = w_p + w_d + 2^-52 |C| of the exact one (the points' distances plus the rounding of
+// the subtraction); a product xyz of entries moves by at most
+// dx(|y|+dy)(|z|+dz) + |x| dy(|z|+dz) + |x||y| dz; the evaluation of the six products and
+// their sum errs by at most 2e-15 times the sum of their magnitudes (gamma_7 < 8e-16). Every
+// bound is a sum of non-negative terms, so its own rounding is covered by the 1.01 factor.
+// Below 1e-280 (where products could underflow) the filter abstains.
+int orient_filter(const Fuzzy& a, const Fuzzy& b, const Fuzzy& c, const Fuzzy& d) {
+  const Fuzzy* rows[3] = {&a, &b, &c};
+  double m[3][3], e[3][3];
+  const double dp[3] = {d.p->x, d.p->y, d.p->z};
+  for (int i = 0; i < 3; ++i) {
+    const double rp[3] = {rows[i]->p->x, rows[i]->p->y, rows[i]->p->z};
+    for (int j = 0; j < 3; ++j) {
+      m[i][j] = rp[j] - dp[j];
+      e[i][j] = 1.01 * (rows[i]->w[j] + d.w[j] + 0x1p-52 * std::fabs(m[i][j]));
+    }
+  }
+  static constexpr int perm[6][3] = {{0, 1, 2}, {1, 2, 0}, {2, 0, 1}, {0, 2, 1}, {1, 0, 2}, {2, 1, 0}};
+  double det = 0, magnitude = 0, moved = 0;
+  for (int k = 0; k < 6; ++k) {
+    const double x = m[0][perm[k][0]], y = m[1][perm[k][1]], z = m[2][perm[k][2]];
+    const double dx = e[0][perm[k][0]], dy = e[1][perm[k][1]], dz = e[2][perm[k][2]];
+    const double product = x * y * z;
+    det += k < 3 ? product : -product;
+    const double ax = std::fabs(x), ay = std::fabs(y), az = std::fabs(z);
+    magnitude += ax * ay * az;
+    moved += dx * (ay + dy) * (az + dz) + ax * dy * (az + dz) + ax * ay * dz;
+  }
+  const double bound = 1.01 * (moved + 2e-15 * magnitude);
+  if (!(bound < 1e300) || magnitude < 1e-280) return 2;
+  if (det > bound) return 1;
+  if (-det > bound) return -1;
+  return 2;
+}
+
+}  // namespace
+
 int RecoveryMesh::orient(VertexId a, VertexId b, VertexId c, VertexId d) const {
   const RecoveryVertex &va = vertices[a.value], &vb = vertices[b.value], &vc = vertices[c.value],
                        &vd = vertices[d.value];
   if (va.is_double && vb.is_double && vc.is_double && vd.is_double)
     return predicates::to_int(predicates::orient3d(va.approx, vb.approx, vc.approx, vd.approx));
+  const int f = orient_filter(fuzzy(va), fuzzy(vb), fuzzy(vc), fuzzy(vd));
+  if (f != 2) return f;
   return sgn(orient_q(va.exact, vb.exact, vc.exact, vd.exact));
 }
 
@@ -90,6 +144,8 @@ int RecoveryMesh::orient(VertexId a, VertexId b, VertexId c, const Point3& d) co
   const RecoveryVertex &va = vertices[a.value], &vb = vertices[b.value], &vc = vertices[c.value];
   if (va.is_double && vb.is_double && vc.is_double)
     return predicates::to_int(predicates::orient3d(va.approx, vb.approx, vc.approx, d));
+  const int f = orient_filter(fuzzy(va), fuzzy(vb), fuzzy(vc), Fuzzy{&d, {0, 0, 0}});
+  if (f != 2) return f;
   return sgn(orient_q(va.exact, vb.exact, vc.exact, to_q(d)));
 }
 

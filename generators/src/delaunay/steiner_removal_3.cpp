@@ -17,7 +17,9 @@
 #include <cmath>
 #include <map>
 #include <string>
+#include <utility>
 
+#include "certimesh/predicates/orient3d.h"
 #include "recovery_mesh_3.h"
 
 namespace certimesh::generators::detail {
@@ -194,13 +196,36 @@ bool positive_with(const RecoveryMesh& m, const std::vector<ElementId>& star, Ve
   return true;
 }
 
-// A double point for v inside its star, or false.
-bool find_position(const RecoveryMesh& m, VertexId v, const std::vector<ElementId>& star, const Point3& inward,
-                   Point3* out) {
+// Whether the box of doubles next to p (which holds p's half-ulp rounding box) is strictly on
+// the inner side of each of the triangles' planes: the certificate (design decision 2) takes a
+// vertex whose rounding box meets a surface triangle as lying on it, and a moved Steiner point
+// must not (exact orient3d on the box's corners).
+bool clear_of(const Surface3& s, const std::vector<std::uint32_t>& triangles, const Point3& p) {
+  const double xs[2] = {std::nextafter(p.x, -INFINITY), std::nextafter(p.x, INFINITY)};
+  const double ys[2] = {std::nextafter(p.y, -INFINITY), std::nextafter(p.y, INFINITY)};
+  const double zs[2] = {std::nextafter(p.z, -INFINITY), std::nextafter(p.z, INFINITY)};
+  for (const std::uint32_t t : triangles) {
+    const auto& c = s.triangles[t];
+    for (const double x : xs)
+      for (const double y : ys)
+        for (const double z : zs)
+          if (predicates::orient3d(s.points[c[0]], s.points[c[1]], s.points[c[2]], {x, y, z}) != predicates::Sign::positive)
+            return false;
+  }
+  return true;
+}
+
+// A double point for v inside its star, or false. Along each direction the good positions
+// are an interval (0, e_max) of steps (the star's kernel is convex and v is on its boundary);
+// halving from the star's reach finds a step in (e_max / 2, e_max], and half of it, in
+// (e_max / 4, e_max / 2], keeps a margin from both ends.
+bool find_position(const RecoveryMesh& m, const Surface3& s, const std::vector<std::uint32_t>& triangles, VertexId v,
+                   const std::vector<ElementId>& star, const Point3& inward, Point3* out) {
+  auto good = [&](const Point3& p) { return positive_with(m, star, v, p) && clear_of(s, triangles, p); };
   if (star.empty()) recovery_invariant_broken("a Steiner point in no tetrahedron");
   const Point3 at = m.vertices[v.value].approx;
   Point3 centroid{0, 0, 0};
-  double reach = INFINITY;
+  double reach = 0;
   std::size_t count = 0;
   for (const ElementId t : star)
     for (const VertexId c : m.mesh.vertices(t)) {
@@ -208,23 +233,25 @@ bool find_position(const RecoveryMesh& m, VertexId v, const std::vector<ElementI
       const Point3& p = m.vertices[c.value].approx;
       centroid = {centroid.x + p.x, centroid.y + p.y, centroid.z + p.z};
       ++count;
-      reach = std::min(reach, std::sqrt((p.x - at.x) * (p.x - at.x) + (p.y - at.y) * (p.y - at.y) +
-                                        (p.z - at.z) * (p.z - at.z)));
+      reach = std::max(reach, std::max({std::fabs(p.x - at.x), std::fabs(p.y - at.y), std::fabs(p.z - at.z)}));
     }
   centroid = {centroid.x / double(count), centroid.y / double(count), centroid.z / double(count)};
   const Point3 directions[2] = {
       {inward.x * reach, inward.y * reach, inward.z * reach},
       {centroid.x - at.x, centroid.y - at.y, centroid.z - at.z}};
+  auto candidate = [&](const Point3& d, double step) {
+    return Point3{at.x + step * d.x, at.y + step * d.y, at.z + step * d.z};
+  };
   for (const Point3& d : directions) {
-    double step = 0.5;
+    double step = 1.0;
     // At most ~1100 halvings take any finite step below the smallest subnormal.
     for (int i = 0; i < 1100 && step > 0; ++i, step *= 0.5) {
-      const Point3 p{at.x + step * d.x, at.y + step * d.y, at.z + step * d.z};
+      const Point3 p = candidate(d, step);
       if (p.x == at.x && p.y == at.y && p.z == at.z) break;  // below the double spacing at v
-      if (positive_with(m, star, v, p)) {
-        *out = p;
-        return true;
-      }
+      if (!good(p)) continue;
+      const Point3 half = candidate(d, step / 2);
+      *out = good(half) ? half : p;
+      return true;
     }
   }
   return false;
@@ -234,7 +261,9 @@ void take_off_surface(RecoveryMesh& m, const Surface3& s, VertexId v, BoundaryRe
   const RecoveryVertex& r = m.vertices[v.value];
   const bool on_edge = r.origin == RecoveryVertex::Origin::on_edge;
   Point3 inward{0, 0, 0};
+  std::vector<std::uint32_t> triangles;
   for (const Fan& fan : fans_of(m, s, v)) {
+    triangles.push_back(fan.triangle);
     const Plane2 plane = plane_of(s, fan.triangle);
     const Point3 n = inward_normal(s, fan.triangle);
     inward = {inward.x + n.x, inward.y + n.y, inward.z + n.z};
@@ -246,7 +275,7 @@ void take_off_surface(RecoveryMesh& m, const Surface3& s, VertexId v, BoundaryRe
   inward = normalized(inward);
   Point3 p;
   const std::vector<ElementId> star = m.star(v);
-  if (!find_position(m, v, star, inward, &p)) {
+  if (!find_position(m, s, triangles, v, star, inward, &p)) {
     const Point3& a = m.vertices[v.value].approx;
     throw BoundaryRecoveryError(
         "error: boundary recovery cannot take the Steiner point near (" + std::to_string(a.x) + ", " +
@@ -262,9 +291,32 @@ void take_off_surface(RecoveryMesh& m, const Surface3& s, VertexId v, BoundaryRe
 }  // namespace
 
 void remove_surface_steiner_points(RecoveryMesh& m, const Surface3& s, BoundaryRecoveryCounts& counts) {
-  for (const auto origin : {RecoveryVertex::Origin::on_edge, RecoveryVertex::Origin::on_face})
-    for (std::uint32_t v = 0; v < m.vertices.size(); ++v)
-      if (m.vertices[v].origin == origin) take_off_surface(m, s, VertexId{v}, counts);
+  // In rounds, each an independent set of the Steiner points still on the surface (no two in
+  // one tetrahedron): a point must end deeper than the surface points of its polygon, so a
+  // chain of points taken one after the other would force depths shrinking geometrically
+  // along it (proofs/boundary_recovery_3.md section 5); rounds bound the chain by their number.
+  std::vector<std::uint32_t> pending;
+  for (std::uint32_t v = 0; v < m.vertices.size(); ++v)
+    if (m.vertices[v].origin == RecoveryVertex::Origin::on_edge || m.vertices[v].origin == RecoveryVertex::Origin::on_face)
+      pending.push_back(v);
+  std::vector<char> taken(m.vertices.size(), 0);
+  while (!pending.empty()) {  // each round takes at least its first point: at most |pending| rounds
+    std::vector<std::uint32_t> round, rest;
+    for (const std::uint32_t v : pending) {
+      bool free = true;
+      for (const ElementId t : m.star(VertexId{v}))
+        for (const VertexId c : m.mesh.vertices(t)) free = free && !taken[c.value];
+      if (free) {
+        taken[v] = 1;
+        round.push_back(v);
+      } else {
+        rest.push_back(v);
+      }
+    }
+    for (const std::uint32_t v : round) take_off_surface(m, s, VertexId{v}, counts);
+    for (const std::uint32_t v : round) taken[v] = 0;
+    pending = std::move(rest);
+  }
 }
 
 }  // namespace certimesh::generators::detail
