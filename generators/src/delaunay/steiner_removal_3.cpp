@@ -178,10 +178,11 @@ Point3 inward_normal(const Surface3& s, std::uint32_t triangle) {
   return normalized({-(u.y * w.z - u.z * w.y), -(u.z * w.x - u.x * w.z), -(u.x * w.y - u.y * w.x)});
 }
 
+using Tetrahedron = topology::TetrahedralMesh3::Element;
+
 // Whether every tetrahedron of `star` is positive with v at p (exact).
-bool positive_with(const RecoveryMesh& m, const std::vector<ElementId>& star, VertexId v, const Point3& p) {
-  for (const ElementId t : star) {
-    auto c = m.mesh.vertices(t);
+bool positive_with(const RecoveryMesh& m, const std::vector<Tetrahedron>& star, VertexId v, const Point3& p) {
+  for (Tetrahedron c : star) {
     const std::size_t k = static_cast<std::size_t>(std::find(c.begin(), c.end(), v) - c.begin());
     // volume(c) = -orient(c); with v moved to the last place by one swap, +orient.
     int sign;
@@ -220,15 +221,15 @@ bool clear_of(const Surface3& s, const std::vector<std::uint32_t>& triangles, co
 // halving from the star's reach finds a step in (e_max / 2, e_max], and half of it, in
 // (e_max / 4, e_max / 2], keeps a margin from both ends.
 bool find_position(const RecoveryMesh& m, const Surface3& s, const std::vector<std::uint32_t>& triangles, VertexId v,
-                   const std::vector<ElementId>& star, const Point3& inward, Point3* out) {
+                   const std::vector<Tetrahedron>& star, const Point3& inward, Point3* out) {
   auto good = [&](const Point3& p) { return positive_with(m, star, v, p) && clear_of(s, triangles, p); };
   if (star.empty()) recovery_invariant_broken("a Steiner point in no tetrahedron");
   const Point3 at = m.vertices[v.value].approx;
   Point3 centroid{0, 0, 0};
   double reach = 0;
   std::size_t count = 0;
-  for (const ElementId t : star)
-    for (const VertexId c : m.mesh.vertices(t)) {
+  for (const Tetrahedron& t : star)
+    for (const VertexId c : t) {
       if (c == v) continue;
       const Point3& p = m.vertices[c.value].approx;
       centroid = {centroid.x + p.x, centroid.y + p.y, centroid.z + p.z};
@@ -257,11 +258,14 @@ bool find_position(const RecoveryMesh& m, const Surface3& s, const std::vector<s
   return false;
 }
 
-void take_off_surface(RecoveryMesh& m, const Surface3& s, VertexId v, BoundaryRecoveryCounts& counts) {
-  const RecoveryVertex& r = m.vertices[v.value];
-  const bool on_edge = r.origin == RecoveryVertex::Origin::on_edge;
+// Takes v off the surface, or returns false and changes nothing when its star holds no
+// double position now (a later round may find one, after its neighbours moved).
+bool take_off_surface(RecoveryMesh& m, const Surface3& s, VertexId v, BoundaryRecoveryCounts& counts) {
+  const bool on_edge = m.vertices[v.value].origin == RecoveryVertex::Origin::on_edge;
   Point3 inward{0, 0, 0};
   std::vector<std::uint32_t> triangles;
+  std::vector<Tetrahedron> star, added;
+  for (const ElementId t : m.star(v)) star.push_back(m.mesh.vertices(t));
   for (const Fan& fan : fans_of(m, s, v)) {
     triangles.push_back(fan.triangle);
     const Plane2 plane = plane_of(s, fan.triangle);
@@ -270,22 +274,27 @@ void take_off_surface(RecoveryMesh& m, const Surface3& s, VertexId v, BoundaryRe
     const Polygon polygon = polygon_of(fan);
     if (polygon.size() != fan.next.size() + (on_edge ? 1 : 0))
       recovery_invariant_broken("the surface around Steiner point " + std::to_string(v.value) + " is not a fan");
-    for (const Triangle& t : triangulate(m, plane, polygon)) m.mesh.add_element({t[1], t[0], t[2], v});
+    for (const Triangle& t : triangulate(m, plane, polygon)) added.push_back({t[1], t[0], t[2], v});
   }
+  star.insert(star.end(), added.begin(), added.end());
   inward = normalized(inward);
   Point3 p;
-  const std::vector<ElementId> star = m.star(v);
-  if (!find_position(m, s, triangles, v, star, inward, &p)) {
-    const Point3& a = m.vertices[v.value].approx;
-    throw BoundaryRecoveryError(
-        "error: boundary recovery cannot take the Steiner point near (" + std::to_string(a.x) + ", " +
-        std::to_string(a.y) + ", " + std::to_string(a.z) + ") on surface " + (on_edge ? "edge " : "triangle ") +
-        std::to_string(r.on) +
-        " off the surface: no double point inside its star keeps every tetrahedron positive (the surface has "
-        "features there closer than the double spacing); --refine-surface keeps it on the surface");
-  }
+  if (!find_position(m, s, triangles, v, star, inward, &p)) return false;
+  for (const Tetrahedron& t : added) m.mesh.add_element(t);
   m.set_double_point(v, p, RecoveryVertex::Origin::interior);
   ++counts.moved_inside;
+  return true;
+}
+
+[[noreturn]] void cannot_move(const RecoveryMesh& m, VertexId v) {
+  const RecoveryVertex& r = m.vertices[v.value];
+  const Point3& a = r.approx;
+  throw BoundaryRecoveryError(
+      "error: boundary recovery cannot take the Steiner point near (" + std::to_string(a.x) + ", " +
+      std::to_string(a.y) + ", " + std::to_string(a.z) + ") on surface " +
+      (r.origin == RecoveryVertex::Origin::on_edge ? "edge " : "triangle ") + std::to_string(r.on) +
+      " off the surface: no double point inside its star keeps every tetrahedron positive (the surface has "
+      "features there closer than the double spacing); --refine-surface keeps it on the surface");
 }
 
 }  // namespace
@@ -300,7 +309,7 @@ void remove_surface_steiner_points(RecoveryMesh& m, const Surface3& s, BoundaryR
     if (m.vertices[v].origin == RecoveryVertex::Origin::on_edge || m.vertices[v].origin == RecoveryVertex::Origin::on_face)
       pending.push_back(v);
   std::vector<char> taken(m.vertices.size(), 0);
-  while (!pending.empty()) {  // each round takes at least its first point: at most |pending| rounds
+  while (!pending.empty()) {  // each round moves at least one point: at most |pending| rounds
     std::vector<std::uint32_t> round, rest;
     for (const std::uint32_t v : pending) {
       bool free = true;
@@ -313,8 +322,19 @@ void remove_surface_steiner_points(RecoveryMesh& m, const Surface3& s, BoundaryR
         rest.push_back(v);
       }
     }
-    for (const std::uint32_t v : round) take_off_surface(m, s, VertexId{v}, counts);
+    std::size_t moved = 0;
+    std::vector<std::uint32_t> failed;
+    for (const std::uint32_t v : round) {
+      if (take_off_surface(m, s, VertexId{v}, counts))
+        ++moved;
+      else
+        failed.push_back(v);
+    }
     for (const std::uint32_t v : round) taken[v] = 0;
+    // A point that found no position waits for a later round; a round that moves nothing
+    // would repeat itself, so the measure |pending| must fall every round.
+    if (moved == 0) cannot_move(m, VertexId{failed.front()});
+    rest.insert(rest.begin(), failed.begin(), failed.end());
     pending = std::move(rest);
   }
 }
