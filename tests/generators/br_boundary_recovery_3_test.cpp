@@ -145,7 +145,7 @@ TEST(br_Shapes, ChazellePolyhedron) {
   EXPECT_GT(steiner_points(r, s), 0u);
 }
 
-// KNOWN FAILURE (see proofs/boundary_recovery_3.md section 7): with three or more grooves a
+// KNOWN FAILURE (proofs/boundary_recovery_3.md section 7): with three or more grooves a
 // side, stages 1-2 make thousands of Steiner points, some ulps-close, and stage 4 finds no
 // double position for one of them (BoundaryRecoveryError, never a wrong mesh or a hang).
 TEST(br_Shapes, DISABLED_ChazellePolyhedronManyGrooves) {

@@ -11,6 +11,7 @@
 // cross, so the steps for one edge are at most the cells of the mesh when its walk starts.
 #include <algorithm>
 #include <string>
+#include <utility>
 
 #include "recovery_mesh_3.h"
 
@@ -24,6 +25,22 @@ std::string point_text(const Point3& p) {
 
 int local_of(const topology::TetrahedralMesh3::Element& t, VertexId v) {
   return static_cast<int>(std::find(t.begin(), t.end(), v) - t.begin());
+}
+
+// The 2-3 flip of the tetrahedra t = (u, face) and beyond = (b, face) when the segment (u, b)
+// crosses the interior of their shared face: the three tetrahedra around the new edge (u, b)
+// are positive exactly then. It removes the crossed face and makes only cells through (u, b).
+void flip_2_3(RecoveryMesh& m, ElementId t, ElementId beyond, VertexId u, VertexId b,
+              const topology::TetrahedralMesh3::Facet& f) {
+  m.mesh.remove_element(t);
+  m.mesh.remove_element(beyond);
+  for (int k = 0; k < 3; ++k) {
+    topology::TetrahedralMesh3::Element n{u, b, f[static_cast<std::size_t>(k)], f[static_cast<std::size_t>((k + 1) % 3)]};
+    const int sign = m.volume(n[0], n[1], n[2], n[3]);
+    if (sign == 0) recovery_invariant_broken("a flat tetrahedron in a 2-3 flip");
+    if (sign < 0) std::swap(n[2], n[3]);
+    m.mesh.add_element(n);
+  }
 }
 
 // One step of the walk from u towards b along the surface edge e = (a, b); returns the next
@@ -47,6 +64,14 @@ VertexId step(RecoveryMesh& m, const Surface3& s, std::uint32_t e, VertexId u, B
     if (outside) continue;
     if (zeros == 0) {  // through the interior of the face opposite u
       const auto f = m.mesh.facet(t, i);
+      const ElementId beyond = m.mesh.neighbour(t, i);
+      if (!beyond.is_none()) {
+        const auto far = m.mesh.vertices(beyond);
+        if (std::find(far.begin(), far.end(), b) != far.end()) {
+          flip_2_3(m, t, beyond, u, b, f);  // (u, b) crosses the shared face: no Steiner point
+          return b;
+        }
+      }
       const QPoint &x = m.vertices[f[0].value].exact, &y = m.vertices[f[1].value].exact,
                    &z = m.vertices[f[2].value].exact;
       const mpq_class da = orient_q(x, y, z, qa), db = orient_q(x, y, z, qb);
