@@ -260,7 +260,8 @@ bool find_position(const RecoveryMesh& m, const Surface3& s, const std::vector<s
 
 // Takes v off the surface, or returns false and changes nothing when its star holds no
 // double position now (a later round may find one, after its neighbours moved).
-bool take_off_surface(RecoveryMesh& m, const Surface3& s, VertexId v, BoundaryRecoveryCounts& counts) {
+bool take_off_surface(RecoveryMesh& m, const Surface3& s, VertexId v, BoundaryRecoveryCounts& counts,
+                      std::vector<std::uint32_t>* on_triangles) {
   const bool on_edge = m.vertices[v.value].origin == RecoveryVertex::Origin::on_edge;
   Point3 inward{0, 0, 0};
   std::vector<std::uint32_t> triangles;
@@ -282,8 +283,35 @@ bool take_off_surface(RecoveryMesh& m, const Surface3& s, VertexId v, BoundaryRe
   if (!find_position(m, s, triangles, v, star, inward, &p)) return false;
   for (const Tetrahedron& t : added) m.mesh.add_element(t);
   m.set_double_point(v, p, RecoveryVertex::Origin::interior);
+  *on_triangles = std::move(triangles);
   ++counts.moved_inside;
   return true;
+}
+
+// Moves an earlier-moved Steiner point w towards the centroid of its star (half way, or less
+// if that is not good), to give a neighbour that found no position more room.
+void recentre(RecoveryMesh& m, const Surface3& s, VertexId w, const std::vector<std::uint32_t>& triangles) {
+  std::vector<Tetrahedron> star;
+  for (const ElementId t : m.star(w)) star.push_back(m.mesh.vertices(t));
+  if (star.empty()) return;
+  const Point3 at = m.vertices[w.value].approx;
+  Point3 c{0, 0, 0};
+  double count = 0;
+  for (const Tetrahedron& t : star)
+    for (const VertexId x : t)
+      if (x != w) {
+        const Point3& p = m.vertices[x.value].approx;
+        c = {c.x + p.x, c.y + p.y, c.z + p.z};
+        count += 1;
+      }
+  c = {c.x / count, c.y / count, c.z / count};
+  for (double step = 0.5; step > 0x1p-60; step *= 0.5) {
+    const Point3 p{at.x + step * (c.x - at.x), at.y + step * (c.y - at.y), at.z + step * (c.z - at.z)};
+    if (positive_with(m, star, w, p) && clear_of(s, triangles, p)) {
+      m.set_double_point(w, p, RecoveryVertex::Origin::interior);
+      return;
+    }
+  }
 }
 
 [[noreturn]] void cannot_move(const RecoveryMesh& m, VertexId v) {
@@ -309,6 +337,7 @@ void remove_surface_steiner_points(RecoveryMesh& m, const Surface3& s, BoundaryR
     if (m.vertices[v].origin == RecoveryVertex::Origin::on_edge || m.vertices[v].origin == RecoveryVertex::Origin::on_face)
       pending.push_back(v);
   std::vector<char> taken(m.vertices.size(), 0);
+  std::map<std::uint32_t, std::vector<std::uint32_t>> moved_from;  // a moved point's surface triangles
   while (!pending.empty()) {  // each round moves at least one point: at most |pending| rounds
     std::vector<std::uint32_t> round, rest;
     for (const std::uint32_t v : pending) {
@@ -325,7 +354,14 @@ void remove_surface_steiner_points(RecoveryMesh& m, const Surface3& s, BoundaryR
     std::size_t moved = 0;
     std::vector<std::uint32_t> failed;
     for (const std::uint32_t v : round) {
-      if (take_off_surface(m, s, VertexId{v}, counts))
+      bool done = take_off_surface(m, s, VertexId{v}, counts, &moved_from[v]);
+      if (!done) {  // give it room: recentre the moved Steiner points of its star, then retry once
+        for (const ElementId t : m.star(VertexId{v}))
+          for (const VertexId w : m.mesh.vertices(t))
+            if (moved_from.count(w.value) && !moved_from[w.value].empty()) recentre(m, s, w, moved_from[w.value]);
+        done = take_off_surface(m, s, VertexId{v}, counts, &moved_from[v]);
+      }
+      if (done)
         ++moved;
       else
         failed.push_back(v);
