@@ -1,0 +1,135 @@
+// Stage 2 of boundary recovery: every surface triangle T becomes a union of mesh faces
+// (Algorithm 18's PROCESS_FACES, digest C section 2.2, done triangle by triangle). Once the
+// edges of T are chains of mesh edges (stage 1), T is a union of mesh faces exactly when no
+// mesh edge crosses its relative interior (proofs/boundary_recovery_3.md section 3), so every
+// such edge is split at its exact crossing point with T. The split creates only edges through
+// the new point, which lies in T, so none of them crosses T: the crossing edges of T, found
+// once, are split one by one (each is still an edge when its turn comes, since a split
+// removes only the edge it splits), and the check after that finds none.
+#include <algorithm>
+#include <deque>
+#include <string>
+#include <utility>
+
+#include "recovery_mesh_3.h"
+
+namespace certimesh::generators::detail {
+
+namespace {
+
+using Edge = std::pair<VertexId, VertexId>;
+
+struct Box {
+  Point3 low, high;
+};
+
+bool boxes_meet(const Box& a, const Box& b) {
+  return a.low.x <= b.high.x && b.low.x <= a.high.x && a.low.y <= b.high.y && b.low.y <= a.high.y &&
+         a.low.z <= b.high.z && b.low.z <= a.high.z;
+}
+
+class TriangleCrossings {
+ public:
+  TriangleCrossings(const RecoveryMesh& m, const std::array<std::uint32_t, 3>& t) : m_(m) {
+    for (int i = 0; i < 3; ++i) corner_[i] = VertexId{t[static_cast<std::size_t>(i)]};
+    box_ = box_of(corner_);
+  }
+
+  /// The mesh edges whose relative interior crosses the relative interior of the triangle,
+  /// in a deterministic order. The search visits the tetrahedra that may meet the triangle,
+  /// through vertex stars from the star of its first corner (the closed tetrahedra meeting a
+  /// connected set are connected through shared vertices).
+  std::vector<Edge> find() const {
+    std::vector<char> visited(m_.mesh.element_slot_count(), 0);
+    std::vector<char> expanded(m_.mesh.vertex_slot_count(), 0);  // vertices whose star was searched
+    std::deque<ElementId> queue;
+    for (const ElementId t : m_.star(corner_[0])) visited[t.value] = 1, queue.push_back(t);
+    std::vector<Edge> crossing;
+    while (!queue.empty()) {
+      const ElementId t = queue.front();
+      queue.pop_front();
+      const auto c = m_.mesh.vertices(t);
+      for (int i = 0; i < 4; ++i)
+        for (int j = i + 1; j < 4; ++j)
+          if (crosses(c[static_cast<std::size_t>(i)], c[static_cast<std::size_t>(j)]))
+            crossing.push_back(std::minmax(c[static_cast<std::size_t>(i)], c[static_cast<std::size_t>(j)],
+                                           [](VertexId x, VertexId y) { return x.value < y.value; }));
+      for (const VertexId v : c) {
+        if (expanded[v.value]) continue;
+        expanded[v.value] = 1;
+        for (const ElementId n : m_.star(v)) {
+          if (visited[n.value]) continue;
+          visited[n.value] = 1;
+          if (may_meet(n)) queue.push_back(n);
+        }
+      }
+    }
+    std::sort(crossing.begin(), crossing.end(),
+              [](const Edge& x, const Edge& y) { return std::pair(x.first.value, x.second.value) < std::pair(y.first.value, y.second.value); });
+    crossing.erase(std::unique(crossing.begin(), crossing.end()), crossing.end());
+    return crossing;
+  }
+
+  bool crosses(VertexId p, VertexId q) const {
+    const int op = m_.orient(corner_[0], corner_[1], corner_[2], p);
+    const int oq = m_.orient(corner_[0], corner_[1], corner_[2], q);
+    if (op * oq >= 0) return false;
+    const int s0 = m_.orient(p, q, corner_[0], corner_[1]);
+    const int s1 = m_.orient(p, q, corner_[1], corner_[2]);
+    const int s2 = m_.orient(p, q, corner_[2], corner_[0]);
+    return s0 != 0 && s0 == s1 && s1 == s2;
+  }
+
+  VertexId corner(int i) const { return corner_[i]; }
+
+ private:
+  template <class Range>
+  Box box_of(const Range& vertices) const {
+    Box b{m_.vertices[vertices[0].value].low, m_.vertices[vertices[0].value].high};
+    for (const VertexId v : vertices) {
+      const RecoveryVertex& r = m_.vertices[v.value];
+      b.low = {std::min(b.low.x, r.low.x), std::min(b.low.y, r.low.y), std::min(b.low.z, r.low.z)};
+      b.high = {std::max(b.high.x, r.high.x), std::max(b.high.y, r.high.y), std::max(b.high.z, r.high.z)};
+    }
+    return b;
+  }
+
+  // Conservative: false only when the tetrahedron cannot meet the triangle.
+  bool may_meet(ElementId t) const {
+    const auto c = m_.mesh.vertices(t);
+    if (!boxes_meet(box_of(c), box_)) return false;
+    int positive = 0, negative = 0;
+    for (const VertexId v : c) {
+      const int o = m_.orient(corner_[0], corner_[1], corner_[2], v);
+      positive += o > 0, negative += o < 0;
+    }
+    return positive < 4 && negative < 4;
+  }
+
+  const RecoveryMesh& m_;
+  VertexId corner_[3];
+  Box box_;
+};
+
+}  // namespace
+
+void recover_faces(RecoveryMesh& m, const Surface3& s, BoundaryRecoveryCounts& counts, const ProgressCallback& progress) {
+  for (std::uint32_t f = 0; f < s.triangles.size(); ++f) {
+    const TriangleCrossings triangle(m, s.triangles[f]);
+    // Copies: a split appends to m.vertices, which may move its elements.
+    const QPoint a = m.vertices[triangle.corner(0).value].exact, b = m.vertices[triangle.corner(1).value].exact,
+                 c = m.vertices[triangle.corner(2).value].exact;
+    for (const auto& [p, q] : triangle.find()) {  // the termination measure: this list's length
+      const QPoint &qp = m.vertices[p.value].exact, &qq = m.vertices[q.value].exact;
+      const mpq_class op = orient_q(a, b, c, qp), oq = orient_q(a, b, c, qq);
+      const VertexId edge[2] = {p, q};
+      ++counts.face_steiner_points;
+      m.split(edge, make_vertex(along(qp, qq, op / (op - oq)), RecoveryVertex::Origin::on_face, f));
+    }
+    if (!triangle.find().empty())
+      recovery_invariant_broken("surface triangle " + std::to_string(f) + " is still crossed after its recovery");
+    if ((f & 255) == 0) report(progress, "recovery", s.edges.size() + f, s.edges.size() + s.triangles.size());
+  }
+}
+
+}  // namespace certimesh::generators::detail
