@@ -72,6 +72,7 @@ struct MeshOptions {
   std::uint64_t max_steiner = 4'000'000;  // --max-steiner N: the cap of the --min-angle refinement
   bool convex_hull = false;  // --convex-hull: the convex hull of the points as outer boundary (Triangle's -c)
   double radius_edge = 0.0;  // --radius-edge R (3D): 0 = unset (surfaces: 2; point sets: no refinement)
+  bool refine_surface = false;  // --refine-surface (3D): boundary Steiner points allowed
 };
 
 /// `certimesh mesh DOMAIN -o OUT ...`: meshes DOMAIN, certifies the mesh with the independent

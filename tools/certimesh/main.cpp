@@ -36,6 +36,7 @@ constexpr const char* kHelp =
     "  mesh DOMAIN -o OUT [--size H] [--grading G] [--gamma G] [--algorithm front|delaunay]\n"
     "       [--certificate C.json] [--svg PICTURE.svg] [--save-domain D.poly]\n"
     "       [--no-improve] [--min-angle A] [--max-steiner N] [--quiet] [--convex-hull] [--radius-edge R]\n"
+    "       [--refine-surface]\n"
     "                       mesh a 2D domain (.poly, or builtin:plate, builtin:square,\n"
     "                       builtin:two-holes) with triangles; the mesh is certified against\n"
     "                       the domain before anything is written (OUT: .mesh .msh .vtu .node)\n"
@@ -138,6 +139,8 @@ int parse_and_run_mesh(int argc, char** argv) {
       options.improve = false;
     } else if (arg == "--quiet") {
       options.quiet = true;
+    } else if (arg == "--refine-surface") {
+      options.refine_surface = true;
     } else if (arg == "--convex-hull") {
       options.convex_hull = true;
     } else if (!arg.starts_with("-") && options.domain.empty()) {

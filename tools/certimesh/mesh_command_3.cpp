@@ -4,8 +4,11 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <string>
 #include <vector>
 
+#include "certimesh/generators/delaunay/boundary_recovery_3.h"
+#include "certimesh/generators/domain/surface_problem_3.h"
 #include "certimesh/generators/mesh_solid_3.h"
 #include "certimesh/io/svg_cut_3.h"
 #include "certimesh/topology/quality.h"
@@ -71,22 +74,55 @@ void print_summary_3(const generators::MeshResult3& r, const certificate::Report
   std::printf(")\ncertificate: %s\n", report.valid ? "valid, a conforming mesh of positive tetrahedra" : "INVALID");
 }
 
+bool is_point_set(const io::MeshData& m) {
+  return m.segments.empty() && m.triangles.empty() && m.tetrahedra.empty() && m.facets.empty();
+}
+
+int refuse_surface(const std::string& path, const generators::InvalidSurface& e) {
+  for (const auto& p : e.problems()) std::fprintf(stderr, "error: %s: %s\n", path.c_str(), p.message.c_str());
+  if (e.problems().empty()) std::fprintf(stderr, "error: %s: %s\n", path.c_str(), e.what());
+  return 1;
+}
+
 }  // namespace
 
 int mesh_solid_3(const MeshOptions& options, const io::MeshData& input) {
   generators::MeshOptions3 o;
   o.size = options.size;
   if (options.radius_edge > 0.0) o.max_radius_edge = options.radius_edge;  // else the default, 2
-  // A point set is refined only when asked, as `tetgen` refines only with -q or -a.
-  o.refine = options.size > 0.0 || options.radius_edge > 0.0;
-  const generators::MeshResult3 result = generators::mesh_convex_hull_3(input, o, terminal_progress(options.quiet));
+  o.refine_surface = options.refine_surface;
+  const bool points_only = is_point_set(input);
+  if (!points_only && !input.tetrahedra.empty()) {
+    std::fprintf(stderr, "error: %s: a tetrahedral mesh, not a surface or a point set: `certimesh check` certifies it\n",
+                 options.domain.c_str());
+    return 2;
+  }
+  // A point set is refined only when asked, as `tetgen` refines only with -q or -a; a
+  // surface always (radius-edge 2, sizes from its own edges, unless told otherwise).
+  o.refine = !points_only || options.size > 0.0 || options.radius_edge > 0.0;
+  generators::MeshResult3 result;
+  try {
+    result = points_only ? generators::mesh_convex_hull_3(input, o, terminal_progress(options.quiet))
+                         : generators::mesh_surface_3(generators::read_surface_3(options.domain), o,
+                                                      terminal_progress(options.quiet));
+  } catch (const generators::InvalidSurface& e) {
+    return refuse_surface(options.domain, e);
+  } catch (const generators::BoundaryRecoveryError& e) {
+    std::fprintf(stderr, "error: %s: the boundary could not be recovered: %s (nothing written)\n", options.domain.c_str(),
+                 e.what());
+    return 3;
+  }
   if (!options.quiet && isatty(STDERR_FILENO)) std::fputs("\r\033[K", stderr);
-  const certificate::Report report = certificate::check_mesh(result.mesh, nullptr);
+  // A surface's mesh is certified against the surface as the file gives it; a point set's as
+  // a valid mesh (its domain, the hull, is what the tetrahedra make).
+  const certificate::Report report = certificate::check_mesh(result.mesh, points_only ? nullptr : &input);
   print_summary_3(result, report,
-                  o.refine ? "the convex hull of the points, refined" : "the Delaunay tetrahedralization of the points");
+                  !points_only ? "the solid the surface bounds"
+                  : o.refine   ? "the convex hull of the points, refined"
+                               : "the Delaunay tetrahedralization of the points");
   if (!report.valid) {
-    std::fprintf(stderr, "error: internal: the tetrahedralization fails its certificate: %s (nothing written)\n",
-                 report.finding.message.c_str());
+    std::fprintf(stderr, "error: internal: the tetrahedralization fails its certificate: %s: %s (nothing written)\n",
+                 std::string(certificate::defect_name(report.finding.defect)).c_str(), report.finding.message.c_str());
     return 3;
   }
   MeshOptions without_svg = options;  // the 2D picture is not for a 3D mesh: the cut is

@@ -204,6 +204,7 @@ int run_mesh(const MeshOptions& options) {
   try {
     if (options.domain.rfind(kBuiltinPrefix, 0) != 0) {
       const io::MeshData input = io::read_mesh(options.domain);
+      if (input.dimension == 3) return mesh_solid_3(options, input);  // a surface or a point set
       if (is_point_set(input)) {
         if (options.min_angle > 0.0) {  // not silently ignored: the point set's triangulation is fixed
           std::fprintf(stderr, "error: %s: --min-angle needs a domain with segments (.poly); a point set is meshed as its Delaunay triangulation only\n",

@@ -3,7 +3,9 @@
 
 #include <chrono>
 
+#include "certimesh/generators/delaunay/boundary_recovery_3.h"
 #include "certimesh/generators/delaunay/delaunay_3.h"
+#include "certimesh/generators/domain/surface_validation_3.h"
 
 namespace certimesh::generators {
 
@@ -29,20 +31,34 @@ std::vector<Point3> points_of(const io::MeshData& m) {
   return p;
 }
 
-io::MeshData to_mesh_data(const Tetrahedralization3& solid, const std::vector<io::Label>& input_point_labels) {
-  io::MeshData mesh;
+// The mesh as io::MeshData, vertices in no tetrahedron left out (the others keep their order,
+// so input vertices stay first and in their order); returns how many were left out.
+std::size_t to_mesh_data(const Tetrahedralization3& solid, const std::vector<io::Label>& input_point_labels,
+                         io::MeshData& mesh) {
+  std::vector<std::uint32_t> id(solid.points.size(), 0);
+  for (const auto& t : solid.tetrahedra)
+    for (std::uint32_t v : t) id[v] = 1;
+  std::uint32_t next = 0;
+  std::size_t left_out = 0;
+  mesh = io::MeshData{};
   mesh.dimension = 3;
   mesh.coordinates.reserve(3 * solid.points.size());
-  for (const Point3& p : solid.points) mesh.coordinates.insert(mesh.coordinates.end(), {p.x, p.y, p.z});
-  if (!input_point_labels.empty()) {  // Steiner points carry label 0
-    mesh.point_labels = input_point_labels;
-    mesh.point_labels.resize(solid.points.size(), 0);
+  for (std::size_t v = 0; v < solid.points.size(); ++v) {
+    if (!id[v]) {
+      ++left_out;
+      continue;
+    }
+    id[v] = next++;
+    const Point3& p = solid.points[v];
+    mesh.coordinates.insert(mesh.coordinates.end(), {p.x, p.y, p.z});
+    if (!input_point_labels.empty()) mesh.point_labels.push_back(v < input_point_labels.size() ? input_point_labels[v] : 0);
   }
   mesh.tetrahedra.reserve(4 * solid.tetrahedra.size());
-  for (const auto& t : solid.tetrahedra) mesh.tetrahedra.insert(mesh.tetrahedra.end(), t.begin(), t.end());
+  for (const auto& t : solid.tetrahedra)
+    for (std::uint32_t v : t) mesh.tetrahedra.push_back(id[v]);
   mesh.tetrahedron_labels = solid.labels;
   mesh.tetrahedron_labels.resize(solid.tetrahedra.size(), 0);
-  return mesh;
+  return left_out;
 }
 
 TetrahedralRefinementOptions refinement_options(const MeshOptions3& options) {
@@ -70,7 +86,37 @@ MeshResult3 mesh_convex_hull_3(const io::MeshData& points, const MeshOptions3& o
     clock.stop("refinement");
   }
   result.stats.interior_steiner_points = solid.points.size() - result.stats.input_vertices;
-  result.mesh = to_mesh_data(solid, points.point_labels);
+  to_mesh_data(solid, points.point_labels, result.mesh);
+  return result;
+}
+
+MeshResult3 mesh_surface_3(Surface3 surface, const MeshOptions3& options, const ProgressCallback& progress) {
+  MeshResult3 result;
+  StageClock clock(result.stats);
+  const SurfaceCheck check = validate_surface(surface);  // orients .poly/.smesh shells outward
+  result.stats.surface_shells = check.shells.size();
+  result.stats.cavities = check.cavities;
+  clock.stop("validation");
+  BoundaryRecoveryOptions recovery_options;
+  recovery_options.keep_surface_steiner_points = options.refine_surface;
+  SolidMesh3 recovered = tetrahedralize_solid_3(surface.points, surface.triangles, recovery_options, progress);
+  clock.stop("recovery");
+  const BoundaryRecoveryCounts& counts = recovered.counts;
+  result.stats.boundary_steiner_points = counts.edge_steiner_points + counts.face_steiner_points - counts.moved_inside;
+  Tetrahedralization3 solid;
+  solid.points = std::move(recovered.points);
+  solid.tetrahedra = std::move(recovered.tetrahedra);
+  // Surface triangles inside the solid (an interface: solid on both sides) stay faces.
+  solid.constrained_faces = surface.triangles;
+  if (options.refine) {
+    result.stats.refinement = refine_tetrahedra_3(solid, refinement_options(options), progress);
+    clock.stop("refinement");
+  }
+  result.stats.unused_input_vertices = check.unused_vertices;
+  result.stats.input_vertices = surface.points.size() - check.unused_vertices;
+  to_mesh_data(solid, {}, result.mesh);
+  result.stats.interior_steiner_points =
+      result.mesh.point_count() - result.stats.input_vertices - result.stats.boundary_steiner_points;
   return result;
 }
 

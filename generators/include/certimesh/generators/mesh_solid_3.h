@@ -4,6 +4,10 @@
 // generators/src/pipeline_3; the result carries each stage's time and counts for the CLI.
 //
 //   stage        what it does                                   worst-case cost
+//   validation   the surface's exact checks (surface_validation_3.h)  quadratic when every
+//                                                               triangle's box meets every other
+//   recovery     Delaunay3 of the surface's vertices, the surface recovered and its trace
+//                restored (boundary_recovery_3.h; its proof note states the bounds)
 //   delaunay     Delaunay3 of the points (delaunay_3.h)         O(n^2) (n log n expected on
 //                                                               spread points, BRIO order)
 //   refinement   refine_tetrahedra_3 (tetrahedral_refinement_3.h) O(k) expected for k new
@@ -15,6 +19,7 @@
 #include <vector>
 
 #include "certimesh/generators/delaunay/tetrahedral_refinement_3.h"
+#include "certimesh/generators/domain/surface_3.h"
 #include "certimesh/generators/progress.h"
 #include "certimesh/io/mesh_data.h"
 
@@ -31,6 +36,9 @@ struct MeshOptions3 {
   /// tetrahedralization is the answer, as `tetgen` without -q gives).
   bool refine = true;
   std::uint64_t max_insertions = 0;  // 0: the refinement's own budget
+  /// --refine-surface: Steiner points of the recovery may stay on the surface (each the
+  /// rounding of an exact point of its edge or triangle); default: none on it.
+  bool refine_surface = false;
 };
 
 struct StageTime {
@@ -39,9 +47,11 @@ struct StageTime {
 };
 
 struct MeshStats3 {
-  std::size_t input_vertices = 0;
+  std::size_t input_vertices = 0;           // input vertices in the mesh
+  std::size_t unused_input_vertices = 0;    // in no surface triangle: left out
   std::size_t interior_steiner_points = 0;  // vertices added inside the solid
   std::size_t boundary_steiner_points = 0;  // vertices added on the boundary (0 by default)
+  std::size_t surface_shells = 0, cavities = 0;
   TetrahedralRefinementStats refinement;
   std::vector<StageTime> stages;            // in the order they ran
 };
@@ -50,6 +60,13 @@ struct MeshResult3 {
   io::MeshData mesh;  // dimension 3, positive tetrahedra, input vertices first with their ids
   MeshStats3 stats;
 };
+
+/// The solid a closed surface bounds (where its winding number is not zero, design decision
+/// 8): validated (InvalidSurface naming the first problems), the surface recovered exactly --
+/// every input triangle a boundary face with bit-identical vertices, unless refine_surface --
+/// then refined. Input vertices come first in their order; vertices in no triangle are left
+/// out (and counted). Throws BoundaryRecoveryError when the recovery cannot finish.
+MeshResult3 mesh_surface_3(Surface3 surface, const MeshOptions3& options, const ProgressCallback& progress = {});
 
 /// The convex hull of the points of `points` (dimension 3), tetrahedralized and refined.
 /// Throws DelaunayError as delaunay_of_points_3 does.
