@@ -14,6 +14,9 @@
 
 namespace certimesh::certificate::detail {
 
+__extension__ typedef __int128 Int128;             // GCC and Clang: products of two 53-bit mantissas
+__extension__ typedef unsigned __int128 UInt128;
+
 /// m 2^e, exactly: what sums and products of doubles are.
 struct Dyadic {
   mpz_class m = 0;
@@ -43,7 +46,11 @@ inline double ratio_to_root(const Dyadic& a, const Dyadic& b) {
   return std::ldexp(ma / std::sqrt(mb), static_cast<int>(ea + a.e - exponent_b / 2));
 }
 
-/// Also sums integers times powers of two (m 2^e), in the same units.
+/// Also sums integers times powers of two (m 2^e), in the same units. Products of doubles whose
+/// exponents lie within kReach bits of the first one are summed in a fixed 384-bit two's
+/// complement integer (no allocation: the rounding-box tests and the chain measures sum a few
+/// dozen such products per vertex); the first term outside that window, or an integer term,
+/// moves the sum to GMP. Both paths are exact, and `sign`, `dyadic`, `value` read either.
 class ExactProductSum {
  public:
   /// Adds sign * a * b exactly (a, b finite).
@@ -51,32 +58,47 @@ class ExactProductSum {
     if (a == 0 || b == 0 || sign == 0) return;
     long ea = 0, eb = 0;
     const std::int64_t ma = decompose(a, ea), mb = decompose(b, eb);  // a = ma 2^ea, |ma| < 2^53
-    term_ = static_cast<long>(ma);
-    term_ *= static_cast<long>(mb);
-    if (sign < 0) term_ = -term_;
+    Int128 product = static_cast<Int128>(ma) * mb;                // |product| < 2^106
+    if (sign < 0) product = -product;
+    if (!spilled_ && add_fixed(product, ea + eb)) return;
+    spill();
+    term_ = mpz_of(product);
     add_term(ea + eb);
   }
   /// Adds m * 2^exponent exactly.
   void add(const mpz_class& m, long exponent) {
     if (m == 0) return;
+    spill();
     term_ = m;
     add_term(exponent);
   }
   /// The sum as m 2^e.
-  Dyadic dyadic() const { return {sum_, unit_ == LONG_MAX ? 0 : unit_}; }
+  Dyadic dyadic() const {
+    if (!spilled_) return empty_ ? Dyadic{} : Dyadic{fixed_value(), base_};
+    return {sum_, unit_ == LONG_MAX ? 0 : unit_};
+  }
   /// The sign of the sum: -1, 0 or +1.
-  int sign() const { return sgn(sum_); }
+  int sign() const {
+    if (spilled_) return sgn(sum_);
+    if (limb_[kLimbs - 1] >> 63) return -1;
+    for (std::uint64_t w : limb_)
+      if (w != 0) return 1;
+    return 0;
+  }
   /// The sum, exactly.
   mpq_class value() const {
-    mpq_class q(sum_);
-    if (unit_ == LONG_MAX || unit_ == 0) return q;
-    if (unit_ > 0) mpz_mul_2exp(q.get_num_mpz_t(), q.get_num_mpz_t(), static_cast<mp_bitcnt_t>(unit_));
-    else mpz_mul_2exp(q.get_den_mpz_t(), q.get_den_mpz_t(), static_cast<mp_bitcnt_t>(-unit_));
+    const Dyadic d = dyadic();
+    mpq_class q(d.m);
+    if (d.e > 0) mpz_mul_2exp(q.get_num_mpz_t(), q.get_num_mpz_t(), static_cast<mp_bitcnt_t>(d.e));
+    else if (d.e < 0) mpz_mul_2exp(q.get_den_mpz_t(), q.get_den_mpz_t(), static_cast<mp_bitcnt_t>(-d.e));
     q.canonicalize();
     return q;
   }
 
  private:
+  static constexpr int kLimbs = 6;     // 384 bits, two's complement
+  static constexpr long kBelow = 96;   // bit 0 is 2^(first exponent - kBelow)
+  static constexpr long kReach = 192;  // a term's lowest bit at 0 .. kReach: below 2^(106 + 192)
   // A finite double as m 2^e with an integer |m| < 2^53, from its bits (IEEE binary64).
   static std::int64_t decompose(double a, long& e) {
     const auto bits = std::bit_cast<std::uint64_t>(a);
@@ -85,6 +107,58 @@ class ExactProductSum {
     if (biased == 0) e = -1074;  // subnormal (or zero)
     else m |= std::int64_t{1} << 52, e = biased - 1075;
     return bits >> 63 ? -m : m;
+  }
+  static mpz_class mpz_of(Int128 x) {
+    const bool negative = x < 0;
+    const auto magnitude = static_cast<UInt128>(negative ? -x : x);
+    const std::uint64_t words[2] = {static_cast<std::uint64_t>(magnitude), static_cast<std::uint64_t>(magnitude >> 64)};
+    mpz_class z;
+    mpz_import(z.get_mpz_t(), 2, -1, sizeof(std::uint64_t), 0, 0, words);
+    if (negative) z = -z;
+    return z;
+  }
+  // Adds x 2^e to the fixed sum when e is in its window; false (nothing added) when not. The
+  // sum of fewer than 2^84 terms below 2^(106 + kReach) stays below 2^383 in magnitude.
+  bool add_fixed(Int128 x, long e) {
+    if (empty_) base_ = e - kBelow, empty_ = false;
+    const long offset = e - base_;
+    if (offset < 0 || offset > kReach) return false;
+    const int q = static_cast<int>(offset / 64), r = static_cast<int>(offset % 64);
+    const auto lo = static_cast<std::uint64_t>(x), hi = static_cast<std::uint64_t>(x >> 64);
+    const std::uint64_t ext = x < 0 ? ~std::uint64_t{0} : 0;  // sign extension
+    std::uint64_t w[kLimbs];
+    for (int i = 0; i < kLimbs; ++i) w[i] = i < q ? 0 : ext;
+    w[q] = lo << r;
+    w[q + 1] = r == 0 ? hi : (hi << r) | (lo >> (64 - r));
+    w[q + 2] = r == 0 ? ext : (ext << r) | (hi >> (64 - r));
+    unsigned carry = 0;
+    for (int i = 0; i < kLimbs; ++i) {
+      const UInt128 s = static_cast<UInt128>(limb_[i]) + w[i] + carry;
+      limb_[i] = static_cast<std::uint64_t>(s);
+      carry = static_cast<unsigned>(s >> 64);
+    }
+    return true;
+  }
+  mpz_class fixed_value() const {
+    const bool negative = limb_[kLimbs - 1] >> 63;
+    std::uint64_t magnitude[kLimbs];
+    unsigned carry = 1;
+    for (int i = 0; i < kLimbs; ++i) {  // |two's complement|: invert and add one when negative
+      const UInt128 s = static_cast<UInt128>(negative ? ~limb_[i] : limb_[i]) + (negative ? carry : 0);
+      magnitude[i] = static_cast<std::uint64_t>(s);
+      carry = static_cast<unsigned>(s >> 64);
+    }
+    mpz_class z;
+    mpz_import(z.get_mpz_t(), kLimbs, -1, sizeof(std::uint64_t), 0, 0, magnitude);
+    if (negative) z = -z;
+    return z;
+  }
+  void spill() {
+    if (spilled_) return;
+    spilled_ = true;
+    if (empty_) return;
+    sum_ = fixed_value();
+    unit_ = base_;
   }
   void add_term(long exponent) {
     if (exponent < unit_) {
@@ -95,8 +169,11 @@ class ExactProductSum {
     sum_ += term_;
   }
 
+  std::uint64_t limb_[kLimbs] = {};
+  long base_ = 0;
+  bool empty_ = true, spilled_ = false;
   mpz_class sum_ = 0, term_ = 0;
-  long unit_ = LONG_MAX;  // the sum is sum_ * 2^unit_
+  long unit_ = LONG_MAX;  // the spilled sum is sum_ * 2^unit_
 };
 
 /// (b - a) x (p - a), exactly (2D points: x, y).
