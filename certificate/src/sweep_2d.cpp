@@ -37,9 +37,11 @@ struct Segment {
 };
 
 struct Key {  // the segment itself, not only its index: a comparison touches no other memory
-  std::uint32_t segment;
-  int weight;
-  Segment s;
+  // Mutable: at a vertex where one segment ends and the next starts, the next takes the
+  // ended one's node in place (Sweep::pass_through), which keeps the order (see there).
+  mutable std::uint32_t segment;
+  mutable int weight;
+  mutable Segment s;
 };
 
 // The comparison needs the segments and a place to record a contact it notices.
@@ -141,6 +143,11 @@ class Sweep {
       const Point2 here = m_.p2(events.order[i]);
       while (j < events.order.size() && m_.p2(events.order[j]) == here) ++j;  // one point, maybe several ids
       answer_until([&](const Point2& q) { return lex_less(q, here); });
+      if (j == i + 1 && pass_through(events.at(0, events.order[i]), events.at(1, events.order[i]))) {
+        if (found_a_ >= 0) return {found_a_, found_b_};
+        answer_until([&](const Point2& q) { return q == here; });
+        continue;
+      }
       for (int kind = 0; kind < 2; ++kind)  // at one point: the segments ending there leave, then those starting enter
         for (std::size_t k = i; k < j; ++k)
           for (std::uint32_t f : events.at(kind, events.order[k])) {
@@ -204,6 +211,29 @@ class Sweep {
     where_[f] = it;
     test(before(it), it);
     test(it, std::next(it));
+  }
+  // At a vertex v where exactly one segment e ends and one f starts (a boundary chain passing
+  // through v, the common case), f takes e's node: no tree search. The order stays right: every
+  // other segment g in the status misses v (g ending or starting at v would be e or f) and,
+  // there being no contact before v (the first contact is found before the sweep passes it),
+  // lies on the side of v that it lies of e just before v, which is the side it lies of f just
+  // after. A g through v's interior is a contact at v: the segments between g and e just before
+  // v all pass through v (else a contact below v), so g's neighbour among them meets g at v,
+  // and that pair was tested when it became adjacent. f is tested with its new neighbours, as
+  // an insertion would. The weights must agree (the subtree sums stay right); if not, false.
+  template <class Span>
+  bool pass_through(const Span& ending, const Span& starting) {
+    if (ending.end() - ending.begin() != 1 || starting.end() - starting.begin() != 1) return false;
+    const std::uint32_t e = *ending.begin(), f = *starting.begin();
+    if (segments_[e].weight != segments_[f].weight) return false;
+    const Status::iterator it = where_[e];
+    it->segment = f;
+    it->s = segments_[f];
+    where_[f] = it;
+    where_[e] = status_.end();
+    test(before(it), it);
+    test(it, std::next(it));
+    return true;
   }
   void leave(std::uint32_t f) {
     const Status::iterator it = where_[f];

@@ -535,5 +535,61 @@ TEST(CertificateAdversary, ComponentWithEveryVertexShared3d) {
   EXPECT_TRUE(check_mesh(three_corners).valid) << check_mesh(three_corners).finding.message;
 }
 
+
+// Two ladders of triangles (strips) that overlap, crossing where both boundaries run straight
+// on: the crossing edges start at vertices where one boundary edge ends and the next begins,
+// which the 2D sweep passes without a tree search (sweep_2d.cpp, pass_through). The oracle is
+// brute force: every pair of boundary edges of the two strips tested in exact rationals. Each
+// strip alone is certified; together they must be refused as crossing (or touching, when a
+// vertex of one lands on the other), never certified and never as some later defect.
+MeshData ladder(double ox, double oy, double sx, double sy, double wx, double wy, int rungs) {
+  MeshData m;
+  m.dimension = 2;
+  for (int j = 0; j <= rungs; ++j) append(m.coordinates, {ox + j * sx, oy + j * sy, ox + j * sx + wx, oy + j * sy + wy});
+  for (Index j = 0; j < static_cast<Index>(rungs); ++j) append(m.triangles, {2 * j, 2 * j + 1, 2 * j + 3, 2 * j, 2 * j + 3, 2 * j + 2});
+  return m;
+}
+// The boundary edges of a ladder (its two long sides and two ends), as vertex pairs.
+std::vector<std::pair<Index, Index>> ladder_boundary(int rungs) {
+  std::vector<std::pair<Index, Index>> e{{0, 1}, {static_cast<Index>(2 * rungs), static_cast<Index>(2 * rungs + 1)}};
+  for (Index j = 0; j < static_cast<Index>(rungs); ++j) e.push_back({2 * j, 2 * j + 2}), e.push_back({2 * j + 1, 2 * j + 3});
+  return e;
+}
+bool closed_segments_meet(const MeshData& m, Index a, Index b, Index c, Index d) {
+  const int o1 = sgn(twice_area(m, a, b, c)), o2 = sgn(twice_area(m, a, b, d));
+  const int o3 = sgn(twice_area(m, c, d, a)), o4 = sgn(twice_area(m, c, d, b));
+  if (o1 * o2 > 0 || o3 * o4 > 0) return false;
+  if (o1 != 0 || o2 != 0 || o3 != 0 || o4 != 0) return true;
+  auto q = [&](Index v, int k) { return mpq_class(m.coordinates[2 * v + k]); };  // collinear: ranges overlap
+  for (int k = 0; k < 2; ++k)
+    if (std::max(q(a, k), q(b, k)) < std::min(q(c, k), q(d, k)) || std::max(q(c, k), q(d, k)) < std::min(q(a, k), q(b, k))) return false;
+  return true;
+}
+
+TEST(CertificateAdversary, StripsCrossingWhereBoundariesRunStraight) {
+  std::mt19937 rng(20261202);
+  std::uniform_int_distribution<int> offset(-64, 64);
+  int crossing = 0;
+  for (int trial = 0; trial < 300; ++trial) {
+    const int n = 12;
+    const MeshData a = ladder(0, 0, 0, 1, 1, 0, n);  // upright: sides x = 0 and x = 1
+    // Tilted, climbing to the right: its long sides climb too, vertex after vertex.
+    const MeshData b = ladder(-4 + offset(rng) / 64.0, 3 + offset(rng) / 32.0, 0.75, 0.3125 + offset(rng) / 1024.0, 0.125, -0.875, n);
+    MeshData both = a;
+    const auto shift = static_cast<Index>(a.point_count());
+    both.coordinates.insert(both.coordinates.end(), b.coordinates.begin(), b.coordinates.end());
+    for (Index v : b.triangles) both.triangles.push_back(v + shift);
+    ASSERT_TRUE(testing::all_elements_positive(both));
+    ASSERT_TRUE(check_mesh(a).valid && check_mesh(b).valid);
+    bool meet = false;
+    for (const auto& [p, q] : ladder_boundary(n))
+      for (const auto& [r, s] : ladder_boundary(n)) meet = meet || closed_segments_meet(both, p, q, r + shift, s + shift);
+    ASSERT_TRUE(meet) << "trial " << trial << ": the strips are placed to overlap";
+    const std::string d = defect_of(both);
+    EXPECT_TRUE(d == "boundary_intersection" || d == "t_junction") << "trial " << trial << ": " << d;
+    crossing += d == "boundary_intersection";
+  }
+  EXPECT_GT(crossing, 200);  // most trials cross properly (no vertex exactly on the other strip)
+}
 }  // namespace
 }  // namespace certimesh::certificate::test
