@@ -34,18 +34,6 @@ inline Dyadic abs(Dyadic a) {
   mpz_abs(a.m.get_mpz_t(), a.m.get_mpz_t());
   return a;
 }
-/// The nearest double to |a| / sqrt(b), b > 0, with no overflow or underflow on the way (a
-/// statistic: mantissas to 53 bits, the exponents apart).
-inline double ratio_to_root(const Dyadic& a, const Dyadic& b) {
-  if (a.m == 0) return 0.0;
-  long ea = 0, eb = 0;
-  const double ma = std::fabs(mpz_get_d_2exp(&ea, a.m.get_mpz_t()));  // |a| = ma 2^(ea + a.e)
-  double mb = mpz_get_d_2exp(&eb, b.m.get_mpz_t());
-  long exponent_b = eb + b.e;
-  if (exponent_b % 2 != 0) mb *= 2, exponent_b -= 1;
-  return std::ldexp(ma / std::sqrt(mb), static_cast<int>(ea + a.e - exponent_b / 2));
-}
-
 /// Also sums integers times powers of two (m 2^e), in the same units. Products of doubles whose
 /// exponents lie within kReach bits of the first one are summed in a fixed 384-bit two's
 /// complement integer (no allocation: the rounding-box tests and the chain measures sum a few
@@ -53,13 +41,13 @@ inline double ratio_to_root(const Dyadic& a, const Dyadic& b) {
 /// moves the sum to GMP. Both paths are exact, and `sign`, `dyadic`, `value` read either.
 class ExactProductSum {
  public:
-  /// Adds sign * a * b exactly (a, b finite).
-  void add(double a, double b, int sign = 1) {
-    if (a == 0 || b == 0 || sign == 0) return;
+  /// Adds factor * a * b exactly (a, b finite; |factor| <= 2^20).
+  void add(double a, double b, int factor = 1) {
+    if (a == 0 || b == 0 || factor == 0) return;
     long ea = 0, eb = 0;
     const std::int64_t ma = decompose(a, ea), mb = decompose(b, eb);  // a = ma 2^ea, |ma| < 2^53
     Int128 product = static_cast<Int128>(ma) * mb;                // |product| < 2^106
-    if (sign < 0) product = -product;
+    product *= factor;  // below 2^126
     if (!spilled_ && add_fixed(product, ea + eb)) return;
     spill();
     term_ = mpz_of(product);
@@ -84,6 +72,35 @@ class ExactProductSum {
     for (std::uint64_t w : limb_)
       if (w != 0) return 1;
     return 0;
+  }
+  /// |sum| as d 2^e with d in [0.5, 1) truncated to 53 bits (mpz_get_d_2exp's reading), and
+  /// whether bits were cut; d = 0 for a zero sum.
+  double magnitude_2exp(long& e, bool& cut) const {
+    e = 0, cut = false;
+    if (spilled_) {
+      if (sum_ == 0) return 0.0;
+      const double d = std::fabs(mpz_get_d_2exp(&e, sum_.get_mpz_t()));
+      cut = static_cast<long>(mpz_scan1(sum_.get_mpz_t(), 0)) < e - 53;
+      e += unit_;
+      return d;
+    }
+    std::uint64_t magnitude[kLimbs];
+    magnitude_of(magnitude);
+    int top = kLimbs - 1;
+    while (top >= 0 && magnitude[top] == 0) --top;
+    if (top < 0) return 0.0;
+    const int zeros = std::countl_zero(magnitude[top]);
+    const long bits = 64L * top + 64 - zeros;  // |sum| < 2^bits, bit bits - 1 set
+    // The top 64 bits, left-aligned, and whether anything below them is non-zero.
+    std::uint64_t high = magnitude[top] << zeros, rest = 0;
+    if (top > 0) {
+      high |= zeros == 0 ? 0 : magnitude[top - 1] >> (64 - zeros);
+      rest = zeros == 0 ? magnitude[top - 1] : magnitude[top - 1] << zeros;
+      for (int i = 0; i < top - 1; ++i) rest |= magnitude[i];
+    }
+    cut = (high & 0x7ff) != 0 || rest != 0;
+    e = bits + base_;
+    return std::ldexp(static_cast<double>(high >> 11), -53);  // 53 bits: exact
   }
   /// The sum, exactly.
   mpq_class value() const {
@@ -126,28 +143,30 @@ class ExactProductSum {
     const int q = static_cast<int>(offset / 64), r = static_cast<int>(offset % 64);
     const auto lo = static_cast<std::uint64_t>(x), hi = static_cast<std::uint64_t>(x >> 64);
     const std::uint64_t ext = x < 0 ? ~std::uint64_t{0} : 0;  // sign extension
-    std::uint64_t w[kLimbs];
-    for (int i = 0; i < kLimbs; ++i) w[i] = i < q ? 0 : ext;
-    w[q] = lo << r;
-    w[q + 1] = r == 0 ? hi : (hi << r) | (lo >> (64 - r));
-    w[q + 2] = r == 0 ? ext : (ext << r) | (hi >> (64 - r));
-    unsigned carry = 0;
-    for (int i = 0; i < kLimbs; ++i) {
-      const UInt128 s = static_cast<UInt128>(limb_[i]) + w[i] + carry;
+    // x 2^r in three words, then ext above: added from limb q up, the limbs below unchanged.
+    const std::uint64_t w[3] = {lo << r, r == 0 ? hi : (hi << r) | (lo >> (64 - r)), r == 0 ? ext : (ext << r) | (hi >> (64 - r))};
+    std::uint64_t carry = 0;
+    for (int i = q; i < kLimbs; ++i) {
+      const UInt128 s = static_cast<UInt128>(limb_[i]) + (i - q < 3 ? w[i - q] : ext) + carry;
       limb_[i] = static_cast<std::uint64_t>(s);
-      carry = static_cast<unsigned>(s >> 64);
+      carry = static_cast<std::uint64_t>(s >> 64);
     }
     return true;
   }
-  mpz_class fixed_value() const {
+  // |two's complement|: invert and add one when negative. Returns whether it was.
+  bool magnitude_of(std::uint64_t* magnitude) const {
     const bool negative = limb_[kLimbs - 1] >> 63;
-    std::uint64_t magnitude[kLimbs];
     unsigned carry = 1;
-    for (int i = 0; i < kLimbs; ++i) {  // |two's complement|: invert and add one when negative
+    for (int i = 0; i < kLimbs; ++i) {
       const UInt128 s = static_cast<UInt128>(negative ? ~limb_[i] : limb_[i]) + (negative ? carry : 0);
       magnitude[i] = static_cast<std::uint64_t>(s);
       carry = static_cast<unsigned>(s >> 64);
     }
+    return negative;
+  }
+  mpz_class fixed_value() const {
+    std::uint64_t magnitude[kLimbs];
+    const bool negative = magnitude_of(magnitude);
     mpz_class z;
     mpz_import(z.get_mpz_t(), kLimbs, -1, sizeof(std::uint64_t), 0, 0, magnitude);
     if (negative) z = -z;
@@ -177,17 +196,42 @@ class ExactProductSum {
 };
 
 /// (b - a) x (p - a), exactly (2D points: x, y).
-inline Dyadic cross_from(const double* a, const double* b, const double* p) {
+inline ExactProductSum cross_from(const double* a, const double* b, const double* p) {
   ExactProductSum s;
   s.add(b[0], p[1]), s.add(b[0], a[1], -1), s.add(a[0], p[1], -1);
   s.add(b[1], p[0], -1), s.add(b[1], a[0]), s.add(a[1], p[0]);
-  return s.dyadic();
+  return s;
 }
 /// (q - p) . (b - a), exactly (2D).
-inline Dyadic dot_of_differences(const double* p, const double* q, const double* a, const double* b) {
+inline ExactProductSum dot_of_differences(const double* p, const double* q, const double* a, const double* b) {
   ExactProductSum s;
   for (int k = 0; k < 2; ++k) s.add(q[k], b[k]), s.add(q[k], a[k], -1), s.add(p[k], b[k], -1), s.add(p[k], a[k]);
-  return s.dyadic();
+  return s;
+}
+
+/// The nearest double to |a| / sqrt(b), b > 0, with no overflow or underflow on the way (a
+/// statistic: mantissas truncated to 53 bits, the exponents apart).
+inline double ratio_to_root(const ExactProductSum& a, const ExactProductSum& b) {
+  long ea = 0, eb = 0;
+  bool cut = false;
+  const double ma = a.magnitude_2exp(ea, cut);
+  if (ma == 0) return 0.0;
+  double mb = b.magnitude_2exp(eb, cut);
+  if (eb % 2 != 0) mb *= 2, eb -= 1;
+  return std::ldexp(ma / std::sqrt(mb), static_cast<int>(ea - eb / 2));
+}
+
+/// |sum| rounded outward to doubles, lo <= |sum| <= hi, when |sum| is 0 or within
+/// [2^-480, 2^480] (so products and sums of such bounds stay normal doubles); false otherwise.
+inline bool magnitude_bounds(const ExactProductSum& s, double& lo, double& hi) {
+  long e = 0;
+  bool cut = false;
+  const double d = s.magnitude_2exp(e, cut);
+  if (d == 0) return lo = hi = 0, true;
+  if (e < -479 || e > 480) return false;
+  lo = std::ldexp(d, static_cast<int>(e));  // exact: 53 bits, normal
+  hi = cut ? std::nextafter(lo, INFINITY) : lo;
+  return true;
 }
 
 }  // namespace certimesh::certificate::detail

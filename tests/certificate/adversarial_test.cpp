@@ -11,6 +11,7 @@
 
 #include "certimesh/certificate/check_mesh.h"
 #include "certimesh/fuzz/valid_meshes.h"
+#include "certimesh/fuzz/worst_case_meshes.h"
 #include "mesh_oracle.h"
 #include "pinch_meshes.h"
 #include "unit_meshes.h"
@@ -133,6 +134,48 @@ TEST(CertificateAdversary, MeasureDifferenceIsBoundedAndReported) {
     EXPECT_GE(r.statistics.measure_difference_bound, std::abs(r.statistics.measure_difference));
     EXPECT_LT(r.statistics.measure_difference_bound, std::ldexp(1e-15, 2 * s));
     EXPECT_EQ(r.statistics.domain_measure, std::ldexp(1.5, 2 * s));
+  }
+}
+
+// The bound on the area between the mesh boundary and the domain (6d) against its definition in
+// rationals: per domain segment ab with chain p_0 = a .. p_k = b, the trapezoids
+// |(q - p).u| (|u x (p - a)| + |u x (q - a)|) / (2 |u|^2), u = b - a. The reported bound is at
+// least that sum (it may round up, within 2^-40 relative) at scales where the certificate
+// bounds each chain in double (2^0, 2^-100) and where it takes the exact quotient (2^-250,
+// 2^300: parts outside [2^-480, 2^480]). Mesh: a small spiked star whose Steiner points are
+// rounded off their segments (fuzz/worst_case_meshes.h: vertex 0 the centre, then the 2k
+// corners, then per spike the left and right Steiner points in turn).
+TEST(CertificateAdversary, MeasureBoundIsTheTrapezoidsRoundedUp) {
+  const int k = 40, n = 7;
+  for (int scale : {0, -100, -250, 300}) {
+    MeshData d;
+    MeshData m = certimesh::fuzz::spiked_star_2d(k, n, d);
+    for (double& x : m.coordinates) x = std::ldexp(x, scale);  // exact: no overflow, no subnormals
+    for (double& x : d.coordinates) x = std::ldexp(x, scale);
+    const Report r = check_mesh(m, &d);
+    ASSERT_TRUE(r.valid) << r.finding.message;
+    ASSERT_GT(r.statistics.vertices_in_rounding_box_only, 0u);
+    auto q = [&](Index v, int c) { return mpq_class(m.coordinates[2 * v + c]); };
+    mpq_class want = 0;
+    for (int i = 0; i < k; ++i) {
+      const Index notch = static_cast<Index>(1 + 2 * i), tip = notch + 1, next = static_cast<Index>(1 + (2 * i + 2) % (2 * k));
+      const Index first = static_cast<Index>(1 + 2 * k + i * 2 * (n - 1));
+      for (int side = 0; side < 2; ++side) {
+        std::vector<Index> chain{side == 0 ? notch : next};
+        for (int j = 1; j < n; ++j) chain.push_back(first + static_cast<Index>(2 * (j - 1) + side));
+        chain.push_back(tip);
+        const Index a = chain.front(), b = chain.back();
+        const mpq_class ux = q(b, 0) - q(a, 0), uy = q(b, 1) - q(a, 1), uu = ux * ux + uy * uy;
+        auto off = [&](Index p) -> mpq_class { return abs(ux * (q(p, 1) - q(a, 1)) - uy * (q(p, 0) - q(a, 0))); };
+        for (std::size_t e = 0; e + 1 < chain.size(); ++e) {
+          const Index p = chain[e], r2 = chain[e + 1];
+          want += abs((q(r2, 0) - q(p, 0)) * ux + (q(r2, 1) - q(p, 1)) * uy) * (off(p) + off(r2)) / (2 * uu);
+        }
+      }
+    }
+    ASSERT_GT(want, 0);
+    EXPECT_GE(mpq_class(r.statistics.measure_difference_bound), want) << "scale 2^" << scale;
+    EXPECT_LE(mpq_class(r.statistics.measure_difference_bound), want * (1 + mpq_class(1, 1L << 40))) << "scale 2^" << scale;
   }
 }
 
