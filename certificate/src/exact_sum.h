@@ -41,13 +41,13 @@ inline Dyadic abs(Dyadic a) {
 /// moves the sum to GMP. Both paths are exact, and `sign`, `dyadic`, `value` read either.
 class ExactProductSum {
  public:
-  /// Adds factor * a * b exactly (a, b finite; |factor| <= 2^20).
+  /// Adds factor * a * b exactly (a, b finite; factor -2 .. 2).
   void add(double a, double b, int factor = 1) {
     if (a == 0 || b == 0 || factor == 0) return;
     long ea = 0, eb = 0;
     const std::int64_t ma = decompose(a, ea), mb = decompose(b, eb);  // a = ma 2^ea, |ma| < 2^53
     Int128 product = static_cast<Int128>(ma) * mb;                // |product| < 2^106
-    product *= factor;  // below 2^126
+    product *= factor;  // |product| < 2^107
     if (!spilled_ && add_fixed(product, ea + eb)) return;
     spill();
     term_ = mpz_of(product);
@@ -115,7 +115,7 @@ class ExactProductSum {
  private:
   static constexpr int kLimbs = 6;     // 384 bits, two's complement
   static constexpr long kBelow = 96;   // bit 0 is 2^(first exponent - kBelow)
-  static constexpr long kReach = 192;  // a term's lowest bit at 0 .. kReach: below 2^(106 + 192)
+  static constexpr long kReach = 192;  // a term's lowest bit at 0 .. kReach: below 2^(107 + 192)
   // A finite double as m 2^e with an integer |m| < 2^53, from its bits (IEEE binary64).
   static std::int64_t decompose(double a, long& e) {
     const auto bits = std::bit_cast<std::uint64_t>(a);
@@ -135,7 +135,7 @@ class ExactProductSum {
     return z;
   }
   // Adds x 2^e to the fixed sum when e is in its window; false (nothing added) when not. The
-  // sum of fewer than 2^84 terms below 2^(106 + kReach) stays below 2^383 in magnitude.
+  // sum of fewer than 2^83 terms below 2^(107 + kReach) stays below 2^383 in magnitude.
   bool add_fixed(Int128 x, long e) {
     if (empty_) base_ = e - kBelow, empty_ = false;
     const long offset = e - base_;
