@@ -48,6 +48,16 @@ class ExactProductSum {
     const std::int64_t ma = decompose(a, ea), mb = decompose(b, eb);  // a = ma 2^ea, |ma| < 2^53
     Int128 product = static_cast<Int128>(ma) * mb;                // |product| < 2^106
     product *= factor;  // |product| < 2^107
+    if (small_) {  // up to 15 terms within 16 bits of exponent: one 128-bit sum, |sum| < 2^127
+      if (count_ == 0) small_base_ = ea + eb - 8;
+      const long offset = ea + eb - small_base_;
+      if (offset >= 0 && offset <= 16 && count_ < 15) {
+        acc_ += product << offset;
+        ++count_;
+        return;
+      }
+      settle();
+    }
     if (!spilled_ && add_fixed(product, ea + eb)) return;
     spill();
     term_ = mpz_of(product);
@@ -62,11 +72,13 @@ class ExactProductSum {
   }
   /// The sum as m 2^e.
   Dyadic dyadic() const {
+    settle();
     if (!spilled_) return empty_ ? Dyadic{} : Dyadic{fixed_value(), base_};
     return {sum_, unit_ == LONG_MAX ? 0 : unit_};
   }
   /// The sign of the sum: -1, 0 or +1.
   int sign() const {
+    if (small_) return acc_ > 0 ? 1 : (acc_ < 0 ? -1 : 0);
     if (spilled_) return sgn(sum_);
     if (limb_[kLimbs - 1] >> 63) return -1;
     for (std::uint64_t w : limb_)
@@ -76,6 +88,7 @@ class ExactProductSum {
   /// |sum| as d 2^e with d in [0.5, 1) truncated to 53 bits (mpz_get_d_2exp's reading), and
   /// whether bits were cut; d = 0 for a zero sum.
   double magnitude_2exp(long& e, bool& cut) const {
+    settle();
     e = 0, cut = false;
     if (spilled_) {
       if (sum_ == 0) return 0.0;
@@ -172,7 +185,17 @@ class ExactProductSum {
     if (negative) z = -z;
     return z;
   }
+  // The 128-bit sum of the first terms into the limbs (at offset kBelow - 8 = 88: the first
+  // term's exponent is small_base_ + 8), after which terms go to the limbs directly.
+  void settle() const {
+    if (!small_) return;
+    small_ = false;
+    if (count_ == 0) return;
+    base_ = small_base_ + 8 - kBelow, empty_ = false;
+    const_cast<ExactProductSum*>(this)->add_fixed(acc_, small_base_);  // offset 88: always in the window
+  }
   void spill() {
+    settle();
     if (spilled_) return;
     spilled_ = true;
     if (empty_) return;
@@ -188,9 +211,16 @@ class ExactProductSum {
     sum_ += term_;
   }
 
-  std::uint64_t limb_[kLimbs] = {};
-  long base_ = 0;
-  bool empty_ = true, spilled_ = false;
+  // The first terms are summed in acc_ (small_), then moved to the limbs by settle(), which a
+  // reader may call: these members are mutable, the sum they hold does not change.
+  mutable bool small_ = true;
+  Int128 acc_ = 0;
+  long small_base_ = 0;
+  int count_ = 0;
+  mutable std::uint64_t limb_[kLimbs] = {};
+  mutable long base_ = 0;
+  mutable bool empty_ = true;
+  bool spilled_ = false;
   mpz_class sum_ = 0, term_ = 0;
   long unit_ = LONG_MAX;  // the spilled sum is sum_ * 2^unit_
 };
