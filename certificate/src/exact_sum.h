@@ -52,7 +52,7 @@ class ExactProductSum {
       if (count_ == 0) small_base_ = ea + eb - 8;
       const long offset = ea + eb - small_base_;
       if (offset >= 0 && offset <= 16 && count_ < 15) {
-        acc_ += product << offset;
+        acc_ += static_cast<Int128>(static_cast<UInt128>(product) << offset);  // no signed shift
         ++count_;
         return;
       }
