@@ -48,7 +48,7 @@ class ExactProductSum {
     const std::int64_t ma = decompose(a, ea), mb = decompose(b, eb);  // a = ma 2^ea, |ma| < 2^53
     Int128 product = static_cast<Int128>(ma) * mb;                // |product| < 2^106
     product *= factor;  // |product| < 2^107
-    if (small_) {  // up to 15 terms within 16 bits of exponent: one 128-bit sum, |sum| < 2^127
+    if (small_) {  // up to 15 terms with exponents within 8 of the first: one 128-bit sum, below 2^127
       if (count_ == 0) small_base_ = ea + eb - 8;
       const long offset = ea + eb - small_base_;
       if (offset >= 0 && offset <= 16 && count_ < 15) {
