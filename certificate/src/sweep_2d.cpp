@@ -37,11 +37,9 @@ struct Segment {
 };
 
 struct Key {  // the segment itself, not only its index: a comparison touches no other memory
-  // Mutable: at a vertex where one segment ends and the next starts, the next takes the
-  // ended one's node in place (Sweep::pass_through), which keeps the order (see there).
-  mutable std::uint32_t segment;
-  mutable int weight;
-  mutable Segment s;
+  std::uint32_t segment;
+  int weight;
+  Segment s;
 };
 
 // The comparison needs the segments and a place to record a contact it notices.
@@ -56,7 +54,7 @@ struct Context {
 // +1 left, -1 right, 0 on f's line (the point is then on f, f spanning the sweep there).
 // An end of f itself is decided without the predicate (its filter cannot certify a zero, so the
 // exact stage would run): the common case at shared endpoints.
-Sign side(const Segment& f, const Point2& p) {
+[[gnu::always_inline]] inline Sign side(const Segment& f, const Point2& p) {  // in the tree's comparisons: keep it inlined
   if (p == f.lo || p == f.hi) return Sign::zero;
   return predicates::orient2d(f.lo, f.hi, p);
 }
@@ -227,8 +225,9 @@ class Sweep {
     const std::uint32_t e = *ending.begin(), f = *starting.begin();
     if (segments_[e].weight != segments_[f].weight) return false;
     const Status::iterator it = where_[e];
-    it->segment = f;
-    it->s = segments_[f];
+    Key& key = const_cast<Key&>(*it);  // the node's own (non-const) value; the order is kept, as argued
+    key.segment = f;
+    key.s = segments_[f];
     where_[f] = it;
     where_[e] = status_.end();
     test(before(it), it);
