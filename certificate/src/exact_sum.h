@@ -241,14 +241,20 @@ inline ExactProductSum dot_of_differences(const double* p, const double* q, cons
 
 /// The nearest double to |a| / sqrt(b), b > 0, with no overflow or underflow on the way (a
 /// statistic: mantissas truncated to 53 bits, the exponents apart).
-inline double ratio_to_root(const ExactProductSum& a, const ExactProductSum& b) {
-  long ea = 0, eb = 0;
+/// b given as b.magnitude_2exp reads it (mb, eb): for many a over one b.
+inline double ratio_to_root(const ExactProductSum& a, double mb, long eb) {
+  long ea = 0;
   bool cut = false;
   const double ma = a.magnitude_2exp(ea, cut);
   if (ma == 0) return 0.0;
-  double mb = b.magnitude_2exp(eb, cut);
   if (eb % 2 != 0) mb *= 2, eb -= 1;
   return std::ldexp(ma / std::sqrt(mb), static_cast<int>(ea - eb / 2));
+}
+inline double ratio_to_root(const ExactProductSum& a, const ExactProductSum& b) {
+  long eb = 0;
+  bool cut = false;
+  const double mb = b.magnitude_2exp(eb, cut);
+  return ratio_to_root(a, mb, eb);
 }
 
 /// |sum| rounded outward to doubles, lo <= |sum| <= hi, when |sum| is 0 or within

@@ -162,12 +162,14 @@ bool segment_meets_rounding_box(const double* a, const double* b, const double* 
 
 }  // namespace
 
-bool lies_on(const std::array<const double*, 3>& s, int dim, const double* p, const BoundaryTolerance& tol) {
-  if (lies_exactly_on(s, dim, p)) return true;
+bool meets_accepted_box(const std::array<const double*, 3>& s, int dim, const double* p, const BoundaryTolerance& tol) {
+  // 2D, no tolerance: the integer test at once. The sweep's candidates are mostly the segments
+  // the point is near, where the corner signs of the shortcut below are near zero and take the
+  // predicates' exact stage, four times, before this test runs all the same.
+  if (dim == 2 && !tol.active()) return segment_meets_rounding_box(s[0], s[1], p);
   Box outer;
   for (int k = 0; k < dim; ++k) outer.lo[k] = std::nextafter(p[k], -HUGE_VAL), outer.hi[k] = std::nextafter(p[k], HUGE_VAL);
   if (box_certainly_misses(s, dim, tol.active() ? accepted_bounds(p, dim, tol) : outer)) return false;
-  if (dim == 2 && !tol.active()) return segment_meets_rounding_box(s[0], s[1], p);
   std::vector<Vec> pts;
   for (const double* x : s)
     if (x != nullptr) pts.push_back(point_of(x, dim));
