@@ -1,7 +1,7 @@
 // bench_certificate_worst: certificate::check_mesh on the shapes that attain its worst cases
 // (fuzz/worst_case_meshes.h, issue 12): a star polygon whose boundary boxes all overlap near
 // its centre, an edge in k tetrahedra (k boundary triangles around each of its ends), a grid
-// with a hole point per hole, nested rings. Beside each, in the same run, the CGAL reference
+// with a hole point per hole, nested rings, a TetGen facet of many corners. Beside each, in the same run, the CGAL reference
 // check (orientation + facet pairing only: it does less) as the peer. bench/RESULTS.md has
 // the numbers: the target is under a second per 10^6 elements for every shape.
 //
@@ -94,6 +94,12 @@ Shape spiked(int k) {
   s.has_domain = true;
   return s;
 }
+Shape star_prism(int k) {
+  Shape s;
+  s.mesh = certimesh::fuzz::star_prism_3d(k, s.domain);
+  s.has_domain = true;
+  return s;
+}
 Shape holes(int n) {
   Shape s;
   s.mesh = certimesh::fuzz::holey_grid_2d(n | 1, s.domain);  // odd: the corner squares stay
@@ -119,14 +125,17 @@ int main(int argc, char** argv) {
   // triangles in 12,500 nested rings; the 3D fan at 2,000 tetrahedra (it is quadratic);
   // 100,000 parts pinched at one vertex; 1,000 tetrahedra in every other wedge around one edge
   // (the 3D embedding's box grid is quadratic on it, like book_3d); 400,000 triangles of a
-  // spiked star with 375,000 Steiner points rounded off their segments.
+  // spiked star with 375,000 Steiner points rounded off their segments; a prism over a star
+  // polygon of 1,000 corners against its TetGen facets, 3,000 tetrahedra (quadratic: the
+  // contact check of the facets' cut triangles, whose boxes overlap).
   static Case cases[] = {{"star_fan_2d", star, sized(100000), {}, false},
                          {"holey_grid_2d_with_domain", holes, std::max(9, static_cast<int>(495 * std::sqrt(scale))), {}, false},
                          {"nested_rings_2d", rings, sized(12500), {}, false},
                          {"book_3d", book, sized(2000), {}, false},
                          {"pinwheel_2d", pinwheel, sized(100000), {}, false},
                          {"open_book_3d", open_book, sized(1000), {}, false},
-                         {"spiked_star_2d_with_domain", spiked, sized(12500), {}, false}};
+                         {"spiked_star_2d_with_domain", spiked, sized(12500), {}, false},
+                         {"star_prism_3d_with_facets", star_prism, sized(500), {}, false}};
   for (Case& c : cases) {
     benchmark::RegisterBenchmark(("BM_worst_" + c.name + "_certimesh").c_str(), run_certimesh, &c)->Unit(benchmark::kMillisecond);
     benchmark::RegisterBenchmark(("BM_worst_" + c.name + "_cgal_reference").c_str(), run_cgal, &c)->Unit(benchmark::kMillisecond);

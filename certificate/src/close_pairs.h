@@ -36,22 +36,33 @@ class BoxGrid {
   int cells_ = 1;
   double lo_[3] = {0, 0, 0}, scale_[3] = {0, 0, 0};
   std::vector<std::pair<std::size_t, std::size_t>> entries_;  // (cell, box), sorted
+  std::vector<int> first_;  // per box: the first cell of its range, 3 coordinates (0 beyond dim)
 };
 
 template <class Visit>
 bool BoxGrid::any_pair(Visit visit) const {
+  // A cell's boxes copied side by side with their first cells (the lower corner of their range):
+  // the pair loop, quadratic in a crowded cell, then reads contiguous memory and no range.
+  struct Local {
+    Box box;
+    int first[3];
+    std::size_t id;
+  };
+  std::vector<Local> here;
   for (std::size_t first = 0, end = 0; first < entries_.size(); first = end) {
     const std::size_t c = entries_[first].first;
     while (end < entries_.size() && entries_[end].first == c) ++end;
-    for (std::size_t a = first; a < end; ++a)
-      for (std::size_t b = a + 1; b < end; ++b) {
-        const std::size_t i = entries_[a].second, j = entries_[b].second;
-        if (!boxes_overlap(boxes_[i], boxes_[j], dim_)) continue;
-        int fi[3], li[3], fj[3], lj[3], common[3] = {0, 0, 0};
-        range(boxes_[i], fi, li);
-        range(boxes_[j], fj, lj);
-        for (int k = 0; k < dim_; ++k) common[k] = std::max(fi[k], fj[k]);
-        if (index(common) == c && visit(i, j)) return true;
+    here.clear();
+    for (std::size_t a = first; a < end; ++a) {
+      const std::size_t i = entries_[a].second;
+      here.push_back({boxes_[i], {first_[3 * i], first_[3 * i + 1], first_[3 * i + 2]}, i});
+    }
+    for (std::size_t a = 0; a < here.size(); ++a)
+      for (std::size_t b = a + 1; b < here.size(); ++b) {
+        const Local &x = here[a], &y = here[b];
+        if (!boxes_overlap(x.box, y.box, dim_)) continue;
+        const int common[3] = {std::max(x.first[0], y.first[0]), std::max(x.first[1], y.first[1]), std::max(x.first[2], y.first[2])};
+        if (index(common) == c && visit(x.id, y.id)) return true;
       }
   }
   return false;
@@ -69,9 +80,8 @@ void BoxGrid::each_overlapping(const Box& query, Visit visit) const {
         for (; it != entries_.end() && it->first == here; ++it) {
           const std::size_t i = it->second;
           if (!boxes_overlap(boxes_[i], query, dim_)) continue;
-          int fi[3], li[3], common[3] = {0, 0, 0};
-          range(boxes_[i], fi, li);
-          for (int k = 0; k < dim_; ++k) common[k] = std::max(fi[k], fq[k]);
+          int common[3] = {0, 0, 0};
+          for (int k = 0; k < dim_; ++k) common[k] = std::max(first_[3 * i + static_cast<std::size_t>(k)], fq[k]);
           if (index(common) == here) visit(i);  // the first cell both cover: once per box
         }
       }

@@ -220,7 +220,7 @@ std::vector<OnFacet> incidences(const MeshView& m, const Domain& d, const Domain
     const double* p = m.xyz + static_cast<std::size_t>(v) * m.dim;
     const auto s = corners(d.geo, d.facets.facet(f), m.dim);
     const bool exact = lies_exactly_on(s, m.dim, p);  // then its box meets it
-    if (exact || (!d.pinned[v] && lies_on(s, m.dim, p, d.tolerance))) out.push_back({v, d.face_of(f), exact});
+    if (exact || (!d.pinned[v] && meets_accepted_box(s, m.dim, p, d.tolerance))) out.push_back({v, d.face_of(f), exact});
   };
   if (unmatched.empty()) return finish_incidences(out);
   if (m.dim == 2 && !d.tolerance.active()) {  // rounding boxes: the sweep, O(n log n + k)
@@ -242,11 +242,20 @@ std::vector<OnFacet> incidences(const MeshView& m, const Domain& d, const Domain
 // Distance from mesh vertex v to the line / plane of domain facet f, for the report: exact up
 // to the final rounding (the deviations are below an ulp, and at coordinates near 2^900 or
 // 2^-1000 the squares would overflow or underflow in double).
-double deviation(const MeshView& m, Index v, const Domain& d, std::size_t f) {
+// 2D: |u|^2 of each face, read once (mantissa, exponent; mantissa 0: not yet read).
+using SquaredLengths = std::vector<std::pair<double, long>>;
+double deviation(const MeshView& m, Index v, const Domain& d, std::size_t f, SquaredLengths* cache = nullptr) {
   if (m.dim == 2) {  // |u x (v - a)| / |u|, u = b - a, in integers times powers of two
     const Index* s = d.facets.facet(d.plane(f));
     const double *a = d.geo.xyz + 2 * static_cast<std::size_t>(s[0]), *b = d.geo.xyz + 2 * static_cast<std::size_t>(s[1]);
-    return ratio_to_root(cross_from(a, b, m.xyz + 2 * static_cast<std::size_t>(v)), dot_of_differences(a, b, a, b));
+    std::pair<double, long> uu{0.0, 0};
+    if (cache != nullptr) uu = (*cache)[f];
+    if (uu.first == 0) {
+      bool cut = false;
+      uu.first = dot_of_differences(a, b, a, b).magnitude_2exp(uu.second, cut);
+      if (cache != nullptr) (*cache)[f] = uu;
+    }
+    return ratio_to_root(cross_from(a, b, m.xyz + 2 * static_cast<std::size_t>(v)), uu.first, uu.second);
   }
   const std::vector<Vec> p = face_points(d, f);
   const Vec e = minus(p[1], p[0]), n = m.dim == 2 ? Vec{-e[1], e[0], 0} : cross(e, minus(p[2], p[0]));
@@ -317,6 +326,7 @@ Finding boundary_on_domain(const MeshView& m, const FacetSet& b, const Domain& d
       return finding(Defect::facet_off_domain_boundary, b.owner[f], -1, x[0],
                      "boundary facet " + std::to_string(f) + " of element " + std::to_string(b.owner[f]) + " lies on no single domain facet");
   }
+  SquaredLengths squared_lengths(m.dim == 2 ? d.face_count() : 0, {0.0, 0});
   std::vector<Index> verts(b.vertices);
   std::sort(verts.begin(), verts.end());
   verts.erase(std::unique(verts.begin(), verts.end()), verts.end());
@@ -325,7 +335,7 @@ Finding boundary_on_domain(const MeshView& m, const FacetSet& b, const Domain& d
     if (r.first == r.second) return vertex_off(m, v, d);
     if (std::any_of(r.first, r.second, [](const OnFacet& o) { return o.exact; })) { ++stats.vertices_exactly_on_domain_boundary; continue; }
     ++stats.vertices_in_rounding_box_only;
-    stats.max_boundary_deviation = std::max(stats.max_boundary_deviation, deviation(m, v, d, r.first->facet));
+    stats.max_boundary_deviation = std::max(stats.max_boundary_deviation, deviation(m, v, d, r.first->facet, &squared_lengths));
   }
   return {};
 }
@@ -562,7 +572,7 @@ Finding coverage(const MeshView& m, const FacetSet& b, const Domain& d, const On
         if (!on.has(w, static_cast<std::uint32_t>(f))) return false;
         if (m.dim == 2) return true;
         const double* p = m.xyz + static_cast<std::size_t>(w) * m.dim;
-        return lies_exactly_on({a, z, nullptr}, m.dim, p) || (!d.pinned[w] && lies_on({a, z, nullptr}, m.dim, p, d.tolerance));
+        return lies_exactly_on({a, z, nullptr}, m.dim, p) || (!d.pinned[w] && meets_accepted_box({a, z, nullptr}, m.dim, p, d.tolerance));
       };
       complete = walk(m, edges, d.mesh_vertex_at[from], d.mesh_vertex_at[to], z, on_az, path, seen, ++stamp);
       if (!complete && optional) break;

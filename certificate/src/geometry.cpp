@@ -58,6 +58,11 @@ BoxGrid::BoxGrid(const std::vector<Box>& boxes, int dim) : boxes_(boxes), dim_(d
     if (fits) break;
   }
   std::sort(entries_.begin(), entries_.end());
+  first_.resize(3 * boxes.size());
+  for (std::size_t i = 0; i < boxes.size(); ++i) {
+    int l[3];
+    range(boxes[i], first_.data() + 3 * i, l);
+  }
 }
 
 }  // namespace certimesh::certificate::detail

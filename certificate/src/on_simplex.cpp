@@ -134,12 +134,16 @@ bool meets_box(const std::vector<Vec>& pts, int dim, const double* p, const Boun
 // axis test of meets_box with no rational. The box axes: a double s is at least the box's lower
 // end (half-way to p's lower neighbour) iff s >= p, and at most its upper end iff s <= p. The
 // segment's normal: f(x) = (b - a) x (x - a) is affine, so at a box corner c = (p + q) / 2, q
-// the diagonal neighbour double of p towards that corner, 2 f(c) = f(p) + f(q): twelve products
-// of doubles, summed exactly. The line meets the box iff f is <= 0 at its lowest corner and
-// >= 0 at its highest.
+// the diagonal neighbour double of p towards that corner, 2 f(c) = f(p) + f(q): products of
+// doubles, summed exactly, f(p) and the constant part of f(q) once for both corners. The line
+// meets the box iff f is <= 0 at its lowest corner and >= 0 at its highest.
 bool segment_meets_rounding_box(const double* a, const double* b, const double* p) {
   for (int k = 0; k < 2; ++k)
     if (std::max(a[k], b[k]) < p[k] || std::min(a[k], b[k]) > p[k]) return false;
+  // f(x) = bx xy - ax xy - by xx + ay xx + (by ax - bx ay): f(p) and twice the constant.
+  ExactProductSum at_p;
+  at_p.add(b[0], p[1]), at_p.add(a[0], p[1], -1), at_p.add(b[1], p[0], -1), at_p.add(a[1], p[0]);
+  at_p.add(b[1], a[0], 2), at_p.add(b[0], a[1], -2);
   auto twice_f_at_corner = [&](int towards) {  // +1: the corner where f is largest; -1: smallest
     // f grows with x when b.y < a.y, with y when b.x > a.x; q steps one double that way.
     const double inf = std::numeric_limits<double>::infinity();
@@ -149,11 +153,8 @@ bool segment_meets_rounding_box(const double* a, const double* b, const double* 
       return std::isfinite(y) ? y : x;  // the box ends at x there (half_way)
     };
     const double qx = step(p[0], (b[1] < a[1]) - (b[1] > a[1])), qy = step(p[1], (b[0] > a[0]) - (b[0] < a[0]));
-    ExactProductSum sum;  // f(p) + f(q), f(x) = bx xy - bx ay - ax xy - by xx + by ax + ay xx
-    for (const auto& [x, y] : {std::pair{p[0], p[1]}, std::pair{qx, qy}}) {
-      sum.add(b[0], y), sum.add(b[0], a[1], -1), sum.add(a[0], y, -1);
-      sum.add(b[1], x, -1), sum.add(b[1], a[0]), sum.add(a[1], x);
-    }
+    ExactProductSum sum = at_p;  // f(p) + f(q)
+    sum.add(b[0], qy), sum.add(a[0], qy, -1), sum.add(b[1], qx, -1), sum.add(a[1], qx);
     return sum.sign();
   };
   return twice_f_at_corner(-1) <= 0 && twice_f_at_corner(+1) >= 0;
@@ -161,12 +162,14 @@ bool segment_meets_rounding_box(const double* a, const double* b, const double* 
 
 }  // namespace
 
-bool lies_on(const std::array<const double*, 3>& s, int dim, const double* p, const BoundaryTolerance& tol) {
-  if (lies_exactly_on(s, dim, p)) return true;
+bool meets_accepted_box(const std::array<const double*, 3>& s, int dim, const double* p, const BoundaryTolerance& tol) {
+  // 2D, no tolerance: the integer test at once. The sweep's candidates are mostly the segments
+  // the point is near, where the corner signs of the shortcut below are near zero and take the
+  // predicates' exact stage, four times, before this test runs all the same.
+  if (dim == 2 && !tol.active()) return segment_meets_rounding_box(s[0], s[1], p);
   Box outer;
   for (int k = 0; k < dim; ++k) outer.lo[k] = std::nextafter(p[k], -HUGE_VAL), outer.hi[k] = std::nextafter(p[k], HUGE_VAL);
   if (box_certainly_misses(s, dim, tol.active() ? accepted_bounds(p, dim, tol) : outer)) return false;
-  if (dim == 2 && !tol.active()) return segment_meets_rounding_box(s[0], s[1], p);
   std::vector<Vec> pts;
   for (const double* x : s)
     if (x != nullptr) pts.push_back(point_of(x, dim));

@@ -54,7 +54,7 @@ struct Context {
 // +1 left, -1 right, 0 on f's line (the point is then on f, f spanning the sweep there).
 // An end of f itself is decided without the predicate (its filter cannot certify a zero, so the
 // exact stage would run): the common case at shared endpoints.
-Sign side(const Segment& f, const Point2& p) {
+[[gnu::always_inline]] inline Sign side(const Segment& f, const Point2& p) {  // in the tree's comparisons: keep it inlined
   if (p == f.lo || p == f.hi) return Sign::zero;
   return predicates::orient2d(f.lo, f.hi, p);
 }
@@ -141,6 +141,11 @@ class Sweep {
       const Point2 here = m_.p2(events.order[i]);
       while (j < events.order.size() && m_.p2(events.order[j]) == here) ++j;  // one point, maybe several ids
       answer_until([&](const Point2& q) { return lex_less(q, here); });
+      if (j == i + 1 && pass_through(events.at(0, events.order[i]), events.at(1, events.order[i]))) {
+        if (found_a_ >= 0) return {found_a_, found_b_};
+        answer_until([&](const Point2& q) { return q == here; });
+        continue;
+      }
       for (int kind = 0; kind < 2; ++kind)  // at one point: the segments ending there leave, then those starting enter
         for (std::size_t k = i; k < j; ++k)
           for (std::uint32_t f : events.at(kind, events.order[k])) {
@@ -204,6 +209,30 @@ class Sweep {
     where_[f] = it;
     test(before(it), it);
     test(it, std::next(it));
+  }
+  // At a vertex v where exactly one segment e ends and one f starts (a boundary chain passing
+  // through v, the common case), f takes e's node: no tree search. The order stays right: every
+  // other segment g in the status misses v (g ending or starting at v would be e or f) and,
+  // there being no contact before v (the first contact is found before the sweep passes it),
+  // lies on the side of v that it lies of e just before v, which is the side it lies of f just
+  // after. A g through v's interior is a contact at v: the segments between g and e just before
+  // v all pass through v (else a contact below v), so g's neighbour among them meets g at v,
+  // and that pair was tested when it became adjacent. f is tested with its new neighbours, as
+  // an insertion would. The weights must agree (the subtree sums stay right); if not, false.
+  template <class Span>
+  bool pass_through(const Span& ending, const Span& starting) {
+    if (ending.end() - ending.begin() != 1 || starting.end() - starting.begin() != 1) return false;
+    const std::uint32_t e = *ending.begin(), f = *starting.begin();
+    if (segments_[e].weight != segments_[f].weight) return false;
+    const Status::iterator it = where_[e];
+    Key& key = const_cast<Key&>(*it);  // the node's own (non-const) value; the order is kept, as argued
+    key.segment = f;
+    key.s = segments_[f];
+    where_[f] = it;
+    where_[e] = status_.end();
+    test(before(it), it);
+    test(it, std::next(it));
+    return true;
   }
   void leave(std::uint32_t f) {
     const Status::iterator it = where_[f];

@@ -11,6 +11,7 @@
 
 #include "certimesh/certificate/check_mesh.h"
 #include "certimesh/fuzz/valid_meshes.h"
+#include "certimesh/fuzz/worst_case_meshes.h"
 #include "mesh_oracle.h"
 #include "pinch_meshes.h"
 #include "unit_meshes.h"
@@ -133,6 +134,48 @@ TEST(CertificateAdversary, MeasureDifferenceIsBoundedAndReported) {
     EXPECT_GE(r.statistics.measure_difference_bound, std::abs(r.statistics.measure_difference));
     EXPECT_LT(r.statistics.measure_difference_bound, std::ldexp(1e-15, 2 * s));
     EXPECT_EQ(r.statistics.domain_measure, std::ldexp(1.5, 2 * s));
+  }
+}
+
+// The bound on the area between the mesh boundary and the domain (6d) against its definition in
+// rationals: per domain segment ab with chain p_0 = a .. p_k = b, the trapezoids
+// |(q - p).u| (|u x (p - a)| + |u x (q - a)|) / (2 |u|^2), u = b - a. The reported bound is at
+// least that sum (it may round up, within 2^-40 relative) at scales where the certificate
+// bounds each chain in double (2^0, 2^-100) and where it takes the exact quotient (2^-250,
+// 2^300: parts outside [2^-480, 2^480]). Mesh: a small spiked star whose Steiner points are
+// rounded off their segments (fuzz/worst_case_meshes.h: vertex 0 the centre, then the 2k
+// corners, then per spike the left and right Steiner points in turn).
+TEST(CertificateAdversary, MeasureBoundIsTheTrapezoidsRoundedUp) {
+  const int k = 40, n = 7;
+  for (int scale : {0, -100, -250, 300}) {
+    MeshData d;
+    MeshData m = certimesh::fuzz::spiked_star_2d(k, n, d);
+    for (double& x : m.coordinates) x = std::ldexp(x, scale);  // exact: no overflow, no subnormals
+    for (double& x : d.coordinates) x = std::ldexp(x, scale);
+    const Report r = check_mesh(m, &d);
+    ASSERT_TRUE(r.valid) << r.finding.message;
+    ASSERT_GT(r.statistics.vertices_in_rounding_box_only, 0u);
+    auto q = [&](Index v, int c) { return mpq_class(m.coordinates[2 * v + c]); };
+    mpq_class want = 0;
+    for (int i = 0; i < k; ++i) {
+      const Index notch = static_cast<Index>(1 + 2 * i), tip = notch + 1, next = static_cast<Index>(1 + (2 * i + 2) % (2 * k));
+      const Index first = static_cast<Index>(1 + 2 * k + i * 2 * (n - 1));
+      for (int side = 0; side < 2; ++side) {
+        std::vector<Index> chain{side == 0 ? notch : next};
+        for (int j = 1; j < n; ++j) chain.push_back(first + static_cast<Index>(2 * (j - 1) + side));
+        chain.push_back(tip);
+        const Index a = chain.front(), b = chain.back();
+        const mpq_class ux = q(b, 0) - q(a, 0), uy = q(b, 1) - q(a, 1), uu = ux * ux + uy * uy;
+        auto off = [&](Index p) -> mpq_class { return abs(ux * (q(p, 1) - q(a, 1)) - uy * (q(p, 0) - q(a, 0))); };
+        for (std::size_t e = 0; e + 1 < chain.size(); ++e) {
+          const Index p = chain[e], r2 = chain[e + 1];
+          want += abs((q(r2, 0) - q(p, 0)) * ux + (q(r2, 1) - q(p, 1)) * uy) * (off(p) + off(r2)) / (2 * uu);
+        }
+      }
+    }
+    ASSERT_GT(want, 0);
+    EXPECT_GE(mpq_class(r.statistics.measure_difference_bound), want) << "scale 2^" << scale;
+    EXPECT_LE(mpq_class(r.statistics.measure_difference_bound), want * (1 + mpq_class(1, 1L << 40))) << "scale 2^" << scale;
   }
 }
 
@@ -535,5 +578,61 @@ TEST(CertificateAdversary, ComponentWithEveryVertexShared3d) {
   EXPECT_TRUE(check_mesh(three_corners).valid) << check_mesh(three_corners).finding.message;
 }
 
+
+// Two ladders of triangles (strips) that overlap, crossing where both boundaries run straight
+// on: the crossing edges start at vertices where one boundary edge ends and the next begins,
+// which the 2D sweep passes without a tree search (sweep_2d.cpp, pass_through). The oracle is
+// brute force: every pair of boundary edges of the two strips tested in exact rationals. Each
+// strip alone is certified; together they must be refused as crossing (or touching, when a
+// vertex of one lands on the other), never certified and never as some later defect.
+MeshData ladder(double ox, double oy, double sx, double sy, double wx, double wy, int rungs) {
+  MeshData m;
+  m.dimension = 2;
+  for (int j = 0; j <= rungs; ++j) append(m.coordinates, {ox + j * sx, oy + j * sy, ox + j * sx + wx, oy + j * sy + wy});
+  for (Index j = 0; j < static_cast<Index>(rungs); ++j) append(m.triangles, {2 * j, 2 * j + 1, 2 * j + 3, 2 * j, 2 * j + 3, 2 * j + 2});
+  return m;
+}
+// The boundary edges of a ladder (its two long sides and two ends), as vertex pairs.
+std::vector<std::pair<Index, Index>> ladder_boundary(int rungs) {
+  std::vector<std::pair<Index, Index>> e{{0, 1}, {static_cast<Index>(2 * rungs), static_cast<Index>(2 * rungs + 1)}};
+  for (Index j = 0; j < static_cast<Index>(rungs); ++j) e.push_back({2 * j, 2 * j + 2}), e.push_back({2 * j + 1, 2 * j + 3});
+  return e;
+}
+bool closed_segments_meet(const MeshData& m, Index a, Index b, Index c, Index d) {
+  const int o1 = sgn(twice_area(m, a, b, c)), o2 = sgn(twice_area(m, a, b, d));
+  const int o3 = sgn(twice_area(m, c, d, a)), o4 = sgn(twice_area(m, c, d, b));
+  if (o1 * o2 > 0 || o3 * o4 > 0) return false;
+  if (o1 != 0 || o2 != 0 || o3 != 0 || o4 != 0) return true;
+  auto q = [&](Index v, int k) { return mpq_class(m.coordinates[2 * v + k]); };  // collinear: ranges overlap
+  for (int k = 0; k < 2; ++k)
+    if (std::max(q(a, k), q(b, k)) < std::min(q(c, k), q(d, k)) || std::max(q(c, k), q(d, k)) < std::min(q(a, k), q(b, k))) return false;
+  return true;
+}
+
+TEST(CertificateAdversary, StripsCrossingWhereBoundariesRunStraight) {
+  std::mt19937 rng(20261202);
+  std::uniform_int_distribution<int> offset(-64, 64);
+  int crossing = 0;
+  for (int trial = 0; trial < 300; ++trial) {
+    const int n = 12;
+    const MeshData a = ladder(0, 0, 0, 1, 1, 0, n);  // upright: sides x = 0 and x = 1
+    // Tilted, climbing to the right: its long sides climb too, vertex after vertex.
+    const MeshData b = ladder(-4 + offset(rng) / 64.0, 3 + offset(rng) / 32.0, 0.75, 0.3125 + offset(rng) / 1024.0, 0.125, -0.875, n);
+    MeshData both = a;
+    const auto shift = static_cast<Index>(a.point_count());
+    both.coordinates.insert(both.coordinates.end(), b.coordinates.begin(), b.coordinates.end());
+    for (Index v : b.triangles) both.triangles.push_back(v + shift);
+    ASSERT_TRUE(testing::all_elements_positive(both));
+    ASSERT_TRUE(check_mesh(a).valid && check_mesh(b).valid);
+    bool meet = false;
+    for (const auto& [p, q] : ladder_boundary(n))
+      for (const auto& [r, s] : ladder_boundary(n)) meet = meet || closed_segments_meet(both, p, q, r + shift, s + shift);
+    ASSERT_TRUE(meet) << "trial " << trial << ": the strips are placed to overlap";
+    const std::string d = defect_of(both);
+    EXPECT_TRUE(d == "boundary_intersection" || d == "t_junction") << "trial " << trial << ": " << d;
+    crossing += d == "boundary_intersection";
+  }
+  EXPECT_GT(crossing, 200);  // most trials cross properly (no vertex exactly on the other strip)
+}
 }  // namespace
 }  // namespace certimesh::certificate::test

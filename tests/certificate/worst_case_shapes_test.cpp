@@ -2,6 +2,7 @@
 // confirmed valid by the rational oracle and plain geometry, certified, and, once broken in
 // one place, refused with the defect the break makes. Their timing at 1e5..1e6 elements is
 // bench_certificate_worst (bench/RESULTS.md), never a unit test.
+#include <gmpxx.h>
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -149,5 +150,43 @@ TEST(WorstCaseShapes, OpenBookAroundAnEdge) {
   EXPECT_EQ(defect_of(nested), "non_manifold_boundary");
 }
 
+// A prism over a star polygon against its TetGen domain: two polygonal facets of 2k corners,
+// cut by the certificate into long triangles whose boxes overlap (the quadratic case of the
+// polygonal facets, proofs/mesh_certificate.md section 6). Certified; the top centre lifted
+// 2^-30 off the top facet is refused, and so is the mesh with one wedge left out.
+TEST(WorstCaseShapes, PrismOverAStarPolygonFacet) {
+  MeshData domain;
+  const MeshData m = fuzz::star_prism_3d(60, domain);
+  ASSERT_TRUE(testing::all_elements_positive(m));
+  EXPECT_EQ(m.tetrahedron_count(), 360u);
+  EXPECT_EQ(domain.facets.facet_count(), 122u);
+  // Oracle: the tetrahedra's volumes in rationals add up to the star's area (height 1).
+  auto q = [](const MeshData& x, io::Index v, int c) { return mpq_class(x.coordinates[3 * v + static_cast<std::size_t>(c)]); };
+  mpq_class six_volume = 0, twice_area = 0;
+  for (std::size_t t = 0; t < m.tetrahedron_count(); ++t) {
+    const io::Index* x = m.tetrahedra.data() + 4 * t;
+    mpq_class e[3][3];
+    for (int i = 0; i < 3; ++i)
+      for (int c = 0; c < 3; ++c) e[i][c] = q(m, x[i + 1], c) - q(m, x[0], c);
+    six_volume += e[0][0] * (e[1][1] * e[2][2] - e[1][2] * e[2][1]) - e[0][1] * (e[1][0] * e[2][2] - e[1][2] * e[2][0]) +
+                  e[0][2] * (e[1][0] * e[2][1] - e[1][1] * e[2][0]);
+  }
+  for (io::Index i = 0; i < 120; ++i) {  // the top facet's corners 120 .. 239, counterclockwise
+    const io::Index a = 120 + i, b = 120 + (i + 1) % 120;
+    twice_area += q(domain, a, 0) * q(domain, b, 1) - q(domain, a, 1) * q(domain, b, 0);
+  }
+  EXPECT_EQ(six_volume, 3 * twice_area);
+  const Report r = check_mesh(m, &domain);
+  EXPECT_TRUE(r.valid) << r.finding.message;
+  MeshData lifted = m;  // mesh vertex 1 is the top centre (0, 0, 1)
+  lifted.coordinates[3 * 1 + 2] += 0x1p-30;
+  ASSERT_TRUE(testing::all_elements_positive(lifted));
+  EXPECT_EQ(defect_of(lifted, &domain), "vertex_off_domain_boundary");
+  MeshData notched = m;  // wedge 0's three tetrahedra left out
+  notched.tetrahedra.erase(notched.tetrahedra.begin(), notched.tetrahedra.begin() + 12);
+  notched.coordinates = m.coordinates;
+  ASSERT_TRUE(testing::all_elements_positive(notched));
+  EXPECT_EQ(defect_of(notched, &domain), "facet_off_domain_boundary");
+}
 }  // namespace
 }  // namespace certimesh::certificate::test

@@ -7,6 +7,8 @@
 
 #include <gmpxx.h>
 
+#include <algorithm>
+#include <array>
 #include <bit>
 #include <cmath>
 #include <cstddef>
@@ -187,6 +189,66 @@ inline io::MeshData open_book_3d(int k) {
   for (int i = 0; i < k; ++i) {
     const auto a = static_cast<io::Index>(2 + 2 * i), b = static_cast<io::Index>(3 + 2 * i);
     for (io::Index v : {io::Index{0}, a, b, io::Index{1}}) m.tetrahedra.push_back(v);
+  }
+  return m;
+}
+
+/// A prism of height 1 over a star polygon of 2k corners (tips at radius 1, notches at 1/4)
+/// with the domain as TetGen writes it: `domain` gets the 4k corners and 2k + 2 polygonal
+/// facets (the bottom and top stars, one polygon of 2k corners each, and 2k side quads),
+/// oriented outward. The mesh fans each star from its centre (mesh vertices 0 = (0,0,0) and
+/// 1 = (0,0,1), inside the bottom and top facets, not domain vertices; then the bottom corners,
+/// then the top ones) and splits each wedge prism into three tetrahedra, every shared quad
+/// along the diagonal from its lower-numbered bottom vertex: 6k tetrahedra. The certificate
+/// cuts each star facet into 2k - 2 triangles, most of them long, whose boxes overlap.
+inline io::MeshData star_prism_3d(int k, io::MeshData& domain) {
+  const double pi = std::acos(-1.0);
+  const int n = 2 * k;
+  io::MeshData m;
+  m.dimension = 3;
+  m.coordinates = {0, 0, 0, 0, 0, 1};
+  for (int z = 0; z < 2; ++z)
+    for (int i = 0; i < n; ++i) {
+      const double r = i % 2 == 0 ? 1.0 : 0.25, a = pi * i / k;
+      m.coordinates.insert(m.coordinates.end(), {r * std::cos(a), r * std::sin(a), double(z)});
+    }
+  domain = io::MeshData{};
+  domain.dimension = 3;
+  domain.coordinates.assign(m.coordinates.begin() + 6, m.coordinates.end());
+  auto facet = [&](const std::vector<io::Index>& corners) {
+    domain.facets.corners.insert(domain.facets.corners.end(), corners.begin(), corners.end());
+    domain.facets.polygon_end.push_back(domain.facets.corners.size());
+    domain.facets.facet_end.push_back(domain.facets.polygon_end.size());
+    domain.facets.hole_end.push_back(0);
+  };
+  std::vector<io::Index> bottom, top;
+  for (int i = 0; i < n; ++i) bottom.push_back(static_cast<io::Index>(n - 1 - i)), top.push_back(static_cast<io::Index>(n + i));
+  facet(bottom);  // clockwise from above: outward is down
+  facet(top);
+  for (int i = 0; i < n; ++i) {
+    const auto a = static_cast<io::Index>(i), b = static_cast<io::Index>((i + 1) % n);
+    facet({a, b, static_cast<io::Index>(b + n), static_cast<io::Index>(a + n)});  // outward: right of a -> b
+  }
+  auto q = [&](io::Index v, int c) { return mpq_class(m.coordinates[3 * v + static_cast<std::size_t>(c)]); };
+  auto tetrahedron = [&](io::Index a, io::Index b, io::Index c, io::Index d) {  // positive: swap c, d if not
+    mpq_class e[3][3];
+    for (int r = 0; r < 3; ++r) e[0][r] = q(b, r) - q(a, r), e[1][r] = q(c, r) - q(a, r), e[2][r] = q(d, r) - q(a, r);
+    const mpq_class det = e[0][0] * (e[1][1] * e[2][2] - e[1][2] * e[2][1]) - e[0][1] * (e[1][0] * e[2][2] - e[1][2] * e[2][0]) +
+                          e[0][2] * (e[1][0] * e[2][1] - e[1][1] * e[2][0]);
+    if (det < 0) std::swap(c, d);
+    m.tetrahedra.insert(m.tetrahedra.end(), {a, b, c, d});
+  };
+  for (int i = 0; i < n; ++i) {
+    // The wedge over (centre, corner i, corner i + 1); bottom ids 0, 2 + i, 2 + (i + 1) % n, each
+    // with its top n further on (the centre's top is 1). Sorted bottom u < v < w, tops u' v' w':
+    // (u v w w'), (u v v' w'), (u u' v' w'): each quad split from its lower bottom vertex.
+    std::array<io::Index, 3> base{0, static_cast<io::Index>(2 + i), static_cast<io::Index>(2 + (i + 1) % n)};
+    std::sort(base.begin(), base.end());
+    auto up = [&](io::Index v) { return v == 0 ? io::Index{1} : static_cast<io::Index>(v + n); };
+    const io::Index u = base[0], v = base[1], w = base[2];
+    tetrahedron(u, v, w, up(w));
+    tetrahedron(u, v, up(v), up(w));
+    tetrahedron(u, up(u), up(v), up(w));
   }
   return m;
 }
