@@ -162,6 +162,14 @@ TEST(br_Shapes, DISABLED_ChazellePolyhedronManyGrooves) {
   for (int n : {3, 6}) mesh_and_check(notched_box(1, 1, n, n, 0.5 / (n + 1), 0.49));
 }
 
+// With the Steiner points kept on the surface (--refine-surface) the same polyhedron is meshed
+// and certified (stage 4, which fails above, is not run).
+TEST(br_Shapes, ChazellePolyhedronThreeGroovesKeepingSurfaceSteinerPoints) {
+  BoundaryRecoveryOptions keep;
+  keep.keep_surface_steiner_points = true;
+  mesh_and_check(notched_box(1, 1, 3, 3, 0.5 / 4, 0.49), keep);
+}
+
 TEST(br_Shapes, ThinSlab) {
   mesh_and_check(notched_box(1, 1e-6, 0, 0, 0, 0));
   mesh_and_check(notched_box(1, 1e-6, 2, 2, 0.1, 0.4e-6));
