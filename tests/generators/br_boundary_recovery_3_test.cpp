@@ -1,11 +1,11 @@
 // tetrahedralize_solid_3 (boundary recovery, issue 13 item 4) on the shapes that break the
 // peers: the cube, a cube with a cavity, Schönhardt's prism (no tetrahedralization without a
 // Steiner point), Chazelle-type notched polyhedra (grooves on top and bottom crossing at right
-// angles), thin slabs, dihedral angles below 1 degree, scales 1e-9 and 1e12, and random
-// star-shaped polyhedra. Oracles: the independent certificate (check_mesh against the surface),
-// the boundary faces compared with the input triangles (same vertex indices, bit-identical
-// points, same orientation) and the exact volume (GMP) against the surface's own by the
-// divergence theorem.
+// angles), thin slabs, dihedral angles below 1 degree, scales 1e-9 and 1e12, facets one ulp
+// off coplanar, random star-shaped polyhedra. Oracles: the independent certificate (check_mesh
+// against the surface), the boundary faces compared with the input triangles (same vertex
+// indices, bit-identical points, same orientation) and the exact volume (GMP) against the
+// surface's own by the divergence theorem.
 #include <gmpxx.h>
 #include <gtest/gtest.h>
 #include <rapidcheck/gtest.h>
@@ -25,6 +25,16 @@
 
 namespace certimesh::testing {
 namespace {
+
+// Fixed seed, fewer cases under the sanitizers (RC_PARAMS is read when the first property
+// runs; the caller may override it).
+const bool rc_seed_fixed = [] {
+#if defined(__SANITIZE_ADDRESS__)
+  return setenv("RC_PARAMS", "seed=1313 max_success=25", 0) == 0;
+#else
+  return setenv("RC_PARAMS", "seed=1313 max_success=200", 0) == 0;
+#endif
+}();
 
 using generators::BoundaryRecoveryOptions;
 using generators::SolidMesh3;
@@ -152,6 +162,14 @@ TEST(br_Shapes, DISABLED_ChazellePolyhedronManyGrooves) {
   for (int n : {3, 6}) mesh_and_check(notched_box(1, 1, n, n, 0.5 / (n + 1), 0.49));
 }
 
+// With the Steiner points kept on the surface (--refine-surface) the same polyhedron is meshed
+// and certified (stage 4, which fails above, is not run).
+TEST(br_Shapes, ChazellePolyhedronThreeGroovesKeepingSurfaceSteinerPoints) {
+  BoundaryRecoveryOptions keep;
+  keep.keep_surface_steiner_points = true;
+  mesh_and_check(notched_box(1, 1, 3, 3, 0.5 / 4, 0.49), keep);
+}
+
 TEST(br_Shapes, ThinSlab) {
   mesh_and_check(notched_box(1, 1e-6, 0, 0, 0, 0));
   mesh_and_check(notched_box(1, 1e-6, 2, 2, 0.1, 0.4e-6));
@@ -194,6 +212,31 @@ TEST(br_Shapes, DihedralAnglesBelowOneDegree) {
 
 // KNOWN FAILURE (section 7): reflex V grooves whose walls meet at 0.6 degrees.
 TEST(br_Shapes, DISABLED_ReflexDihedralAnglesBelowOneDegree) { mesh_and_check(notched_box(1, 1, 2, 2, 0.005, 0.45)); }
+
+// A cube whose top face is a fan around its centre raised (or lowered) by one ulp: four
+// triangles one ulp off coplanar, a dihedral angle within 1e-16 of 180 degrees.
+TEST(br_Shapes, NearlyCoplanarFacetsOneUlpOff) {
+  for (const double z : {std::nextafter(1.0, 2.0), std::nextafter(1.0, 0.0)}) {
+    Surface s = notched_box(1, 1, 0, 0, 0, 0);
+    std::vector<Tri> kept;
+    std::vector<std::uint32_t> top;
+    for (const Tri& t : s.triangles)
+      if (s.points[t[0]].z == 1 && s.points[t[1]].z == 1 && s.points[t[2]].z == 1)
+        continue;
+      else
+        kept.push_back(t);
+    s.triangles = kept;
+    const std::uint32_t c = s.add({0.5, 0.5, z});
+    auto at = [&](double x, double y) {
+      for (std::uint32_t i = 0; i < s.points.size(); ++i)
+        if (s.points[i].x == x && s.points[i].y == y && s.points[i].z == 1) return i;
+      return ~0u;
+    };
+    const std::uint32_t ring[4] = {at(0, 0), at(1, 0), at(1, 1), at(0, 1)};
+    for (int i = 0; i < 4; ++i) s.triangles.push_back({c, ring[i], ring[(i + 1) % 4]});
+    mesh_and_check(s);
+  }
+}
 
 TEST(br_Shapes, KeepSurfaceSteinerPoints) {
   BoundaryRecoveryOptions keep;
