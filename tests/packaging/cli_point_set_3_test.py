@@ -20,6 +20,9 @@ import sys
 import tempfile
 from fractions import Fraction as F
 
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from test_report import report  # noqa: E402
+
 FACES = ((1, 3, 2), (0, 2, 3), (0, 3, 1), (0, 1, 2))  # face i counterclockwise seen from corner i
 
 
@@ -182,10 +185,7 @@ def main():
                 failures.append(f"{name} points: exit {run.returncode}, stderr {run.stderr!r}, output written: {os.path.exists(out)}")
             elif name == "repeated" and "points 3 and 10" not in run.stderr:
                 failures.append(f"repeated points: the message does not name them: {run.stderr!r}")
-    for f in failures:
-        print("FAIL", f)
-    print(f"{0 if failures else 1} passed, {1 if failures else 0} failed")
-    return 1 if failures else 0
+    return report(failures)
 
 
 if __name__ == "__main__":

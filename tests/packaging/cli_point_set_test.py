@@ -14,6 +14,9 @@ import sys
 import tempfile
 from fractions import Fraction as F
 
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from test_report import report  # noqa: E402
+
 
 def orient(a, b, c):
     return (b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0])
@@ -95,10 +98,7 @@ def main():
             run = subprocess.run([certimesh, "mesh", node, "-o", out], capture_output=True, text=True, timeout=60)
             if run.returncode != 2 or "error:" not in run.stderr or os.path.exists(out):
                 failures.append(f"{name} points: exit {run.returncode}, stderr {run.stderr!r}, output written: {os.path.exists(out)}")
-    for f in failures:
-        print("FAIL", f)
-    print(f"{0 if failures else 1} passed, {1 if failures else 0} failed")
-    return 1 if failures else 0
+    return report(failures)
 
 
 if __name__ == "__main__":

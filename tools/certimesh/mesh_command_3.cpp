@@ -108,8 +108,10 @@ int mesh_solid_3(const MeshOptions& options, const io::MeshData& input) {
   } catch (const generators::InvalidSurface& e) {
     return refuse_surface(options.domain, e);
   } catch (const generators::BoundaryRecoveryError& e) {
+    std::string why = e.what();
+    if (why.rfind("error: ", 0) == 0) why.erase(0, 7);  // the message is the library's sentence
     std::fprintf(stderr, "error: %s: the boundary could not be recovered: %s (nothing written)\n", options.domain.c_str(),
-                 e.what());
+                 why.c_str());
     return 3;
   }
   if (!options.quiet && isatty(STDERR_FILENO)) std::fputs("\r\033[K", stderr);
