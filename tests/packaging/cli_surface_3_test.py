@@ -7,7 +7,8 @@ input triangles, one for one, same orientation, on bit-identical vertices (no St
 the surface by default); `certimesh check OUT --domain SURFACE` passes. Surfaces: a cube (OFF,
 ASCII STL and Medit), Schönhardt's twisted prism (needs an interior Steiner point), a cube with
 an inward cavity cube, a finely triangulated cube refined with --size. An open cube and two
-boxes that touch are refused with `error:` naming triangles, exit 1, no file.
+boxes that touch are refused with `error:` naming triangles, exit 1, no file; a .smesh with a
+hole point (not meshed yet) is refused by name, exit 2, no file.
 Usage: cli_surface_3_test.py CERTIMESH.
 """
 import math
@@ -206,6 +207,14 @@ def main():
         fine = check(certimesh, tmp, "fine_cube", fine_cube(6), ".off", failures, "--size", "0.1")
         if fine and fine[1] < 1000:
             failures.append(f"fine_cube --size 0.1: only {fine[1]} tetrahedra")
+        # TetGen hole points are not meshed yet: refused by name, not meshed over.
+        smesh, out = os.path.join(tmp, "hole.smesh"), os.path.join(tmp, "hole_out.mesh")
+        with open(smesh, "w") as f:
+            f.write("8 3 0 0\n" + "".join(f"{i} {i & 1} {(i >> 1) & 1} {i >> 2}\n" for i in range(8)))
+            f.write("6 0\n4 0 2 3 1\n4 4 5 7 6\n4 0 1 5 4\n4 1 3 7 5\n4 3 2 6 7\n4 2 0 4 6\n1\n1 0.5 0.5 0.5\n0\n")
+        run = subprocess.run([certimesh, "mesh", smesh, "-o", out], capture_output=True, text=True, timeout=60)
+        if run.returncode != 2 or "hole points" not in run.stderr or os.path.exists(out):
+            failures.append(f"hole.smesh: exit {run.returncode}, stderr {run.stderr.strip()!r}, written {os.path.exists(out)}")
         refused(certimesh, tmp, "open_cube", box((0, 0, 0), (1, 1, 1))[:-1], failures)
         refused(certimesh, tmp, "touching_boxes", box((0, 0, 0), (1, 1, 1)) + box((1, 0.25, 0.25), (2, 0.75, 0.75)), failures)
     return report(failures)

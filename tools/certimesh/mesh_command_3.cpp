@@ -97,6 +97,13 @@ int mesh_solid_3(const MeshOptions& options, const io::MeshData& input) {
                  options.domain.c_str());
     return 2;
   }
+  if (!points_only && (input.hole_count() > 0 || !input.region_points.empty())) {
+    std::fprintf(stderr,
+                 "error: %s: %zu hole points and %zu region points: TetGen's holes and regions are not meshed yet "
+                 "(a cavity is an inner shell oriented inward; docs/meshing_3d.md)\n",
+                 options.domain.c_str(), input.hole_count(), input.region_points.size() / 3);
+    return 2;
+  }
   // A point set is refined only when asked, as `tetgen` refines only with -q or -a; a
   // surface always (radius-edge 2, sizes from its own edges, unless told otherwise).
   o.refine = !points_only || options.size > 0.0 || options.radius_edge > 0.0;
