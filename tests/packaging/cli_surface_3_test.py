@@ -7,8 +7,8 @@ input triangles, one for one, same orientation, on bit-identical vertices (no St
 the surface by default); `certimesh check OUT --domain SURFACE` passes. Surfaces: a cube (OFF,
 ASCII STL and Medit), Schönhardt's twisted prism (needs an interior Steiner point), a cube with
 an inward cavity cube, a finely triangulated cube refined with --size. An open cube and two
-boxes that touch are refused with `error:` naming triangles, exit 1, no file; a .smesh with a
-hole point (not meshed yet) is refused by name, exit 2, no file.
+boxes that touch are refused with `error:` naming triangles, exit 1, no file; --max-steiner stops the
+refinement with exit 4 and a certified mesh; a .smesh with a hole point (not meshed yet) is refused by name, exit 2, no file.
 Usage: cli_surface_3_test.py CERTIMESH.
 """
 import math
@@ -207,6 +207,21 @@ def main():
         fine = check(certimesh, tmp, "fine_cube", fine_cube(6), ".off", failures, "--size", "0.1")
         if fine and fine[1] < 1000:
             failures.append(f"fine_cube --size 0.1: only {fine[1]} tetrahedra")
+        # --max-steiner caps the 3D refinement: exit 4, the mesh written and certified.
+        points, faces = index(fine_cube(4))
+        path, out = os.path.join(tmp, "capped.off"), os.path.join(tmp, "capped_out.mesh")
+        write_off(path, points, faces)
+        counts = []
+        for cap in (50, 60):  # recovery is the same both times: the vertex counts differ by 10
+            run = subprocess.run([certimesh, "mesh", path, "-o", out, "--size", "0.01", "--max-steiner", str(cap)],
+                                 capture_output=True, text=True, timeout=120)
+            counts.append(len(read_medit(out)[0]) if os.path.exists(out) else 0)
+            if run.returncode != 4 or "--max-steiner" not in run.stderr:
+                failures.append(f"capped at {cap}: exit {run.returncode}, stderr {run.stderr.strip()!r}")
+            elif subprocess.run([certimesh, "check", out, "--domain", path], capture_output=True, timeout=120).returncode != 0:
+                failures.append(f"capped at {cap}: the written mesh fails check --domain")
+        if counts[1] - counts[0] != 10:
+            failures.append(f"capped: {counts} vertices at --max-steiner 50 and 60")
         # TetGen hole points are not meshed yet: refused by name, not meshed over.
         smesh, out = os.path.join(tmp, "hole.smesh"), os.path.join(tmp, "hole_out.mesh")
         with open(smesh, "w") as f:

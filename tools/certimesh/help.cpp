@@ -96,8 +96,8 @@ std::string mesh_help() {
          "                       from it (within 0.1 % in squared length): the input angle\n"
          "                       forces it. Angles are measured on the written coordinates.\n"
          "                       Refused for a .node point set\n"
-         "  --max-steiner N      Steiner points --min-angle may add before it stops and says so\n"
-         "                       (exit status 4) (default: " +
+         "  --max-steiner N      Steiner points --min-angle (2D) or the refinement (3D) may add\n"
+         "                       before it stops and says so (exit status 4) (default: " +
          std::to_string(d.max_steiner) +
          ")\n"
          "  --convex-hull        add the convex hull of all the points as outer boundary, as\n"
@@ -121,7 +121,8 @@ std::string mesh_help() {
          "exit status: 0 written; 1 invalid domain; 2 usage error or unreadable input;\n"
          "3 internal error (the mesh failed its certificate; nothing written); 4 written,\n"
          "but --min-angle not met (the cap was reached, or no admissible Steiner point was\n"
-         "left; the triangles below it are counted on standard error).\n";
+         "left; the triangles below it are counted on standard error), or a 3D refinement\n"
+         "stopped at --max-steiner.\n";
 }
 
 std::string check_help() {

@@ -18,20 +18,24 @@ namespace certimesh::cli {
 
 namespace {
 
+// Per tetrahedron, its quality and smallest dihedral angle: one pass, for the summary and the
+// picture.
 struct Quality3 {
+  std::vector<double> quality;
   double worst = 1.0, mean = 0.0, smallest_dihedral = 180.0;
 };
 
 Quality3 quality_of(const io::MeshData& m) {
   Quality3 q;
+  q.quality.resize(m.tetrahedron_count());
   const auto p = [&](io::Index v) {
     return topology::Point3d{m.coordinates[3 * v], m.coordinates[3 * v + 1], m.coordinates[3 * v + 2]};
   };
   for (std::size_t t = 0; t < m.tetrahedron_count(); ++t) {
     const io::Index* c = &m.tetrahedra[4 * t];
-    const double quality = topology::tetrahedron_quality(p(c[0]), p(c[1]), p(c[2]), p(c[3]));
-    q.worst = std::min(q.worst, quality);
-    q.mean += quality;
+    q.quality[t] = topology::tetrahedron_quality(p(c[0]), p(c[1]), p(c[2]), p(c[3]));
+    q.worst = std::min(q.worst, q.quality[t]);
+    q.mean += q.quality[t];
     q.smallest_dihedral =
         std::min(q.smallest_dihedral, topology::tetrahedron_min_dihedral_angle(p(c[0]), p(c[1]), p(c[2]), p(c[3])));
   }
@@ -39,20 +43,8 @@ Quality3 quality_of(const io::MeshData& m) {
   return q;
 }
 
-std::vector<double> qualities(const io::MeshData& m) {
-  std::vector<double> q(m.tetrahedron_count());
-  for (std::size_t t = 0; t < q.size(); ++t) {
-    const io::Index* c = &m.tetrahedra[4 * t];
-    auto p = [&](io::Index v) {
-      return topology::Point3d{m.coordinates[3 * v], m.coordinates[3 * v + 1], m.coordinates[3 * v + 2]};
-    };
-    q[t] = topology::tetrahedron_quality(p(c[0]), p(c[1]), p(c[2]), p(c[3]));
-  }
-  return q;
-}
-
-void print_summary_3(const generators::MeshResult3& r, const certificate::Report& report, const char* what) {
-  const Quality3 q = quality_of(r.mesh);
+void print_summary_3(const generators::MeshResult3& r, const Quality3& q, const certificate::Report& report,
+                     const char* what) {
   std::printf("mesh: %zu vertices (%zu input, %zu Steiner inside, %zu on the boundary), %zu tetrahedra (%zu boundary triangles): %s\n",
               r.mesh.point_count(), r.stats.input_vertices, r.stats.interior_steiner_points,
               r.stats.boundary_steiner_points, r.mesh.tetrahedron_count(), report.statistics.boundary_facets, what);
@@ -74,10 +66,6 @@ void print_summary_3(const generators::MeshResult3& r, const certificate::Report
   std::printf(")\ncertificate: %s\n", report.valid ? "valid, a conforming mesh of positive tetrahedra" : "INVALID");
 }
 
-bool is_point_set(const io::MeshData& m) {
-  return m.segments.empty() && m.triangles.empty() && m.tetrahedra.empty() && m.facets.empty();
-}
-
 int refuse_surface(const std::string& path, const generators::InvalidSurface& e) {
   for (const auto& p : e.problems()) std::fprintf(stderr, "error: %s: %s\n", path.c_str(), p.message.c_str());
   if (e.problems().empty()) std::fprintf(stderr, "error: %s: %s\n", path.c_str(), e.what());
@@ -91,6 +79,7 @@ int mesh_solid_3(const MeshOptions& options, const io::MeshData& input) {
   o.size = options.size;
   if (options.radius_edge > 0.0) o.max_radius_edge = options.radius_edge;  // else the default, 2
   o.refine_surface = options.refine_surface;
+  o.max_insertions = options.max_steiner;  // the refinement stops there and says so (exit 4)
   const bool points_only = is_point_set(input);
   if (!points_only && !input.tetrahedra.empty()) {
     std::fprintf(stderr, "error: %s: a tetrahedral mesh, not a surface or a point set: `certimesh check` certifies it\n",
@@ -125,7 +114,8 @@ int mesh_solid_3(const MeshOptions& options, const io::MeshData& input) {
   // A surface's mesh is certified against the surface as the file gives it; a point set's as
   // a valid mesh (its domain, the hull, is what the tetrahedra make).
   const certificate::Report report = certificate::check_mesh(result.mesh, points_only ? nullptr : &input);
-  print_summary_3(result, report,
+  const Quality3 quality = quality_of(result.mesh);
+  print_summary_3(result, quality, report,
                   !points_only ? "the solid the surface bounds"
                   : o.refine   ? "the convex hull of the points, refined"
                                : "the Delaunay tetrahedralization of the points");
@@ -137,7 +127,12 @@ int mesh_solid_3(const MeshOptions& options, const io::MeshData& input) {
   MeshOptions without_svg = options;  // the 2D picture is not for a 3D mesh: the cut is
   without_svg.svg.clear();
   write_outputs(without_svg, result.mesh, input, report);
-  if (!options.svg.empty()) io::write_svg_cut_picture(result.mesh, io::middle_z(result.mesh), qualities(result.mesh), options.svg);
+  if (!options.svg.empty()) io::write_svg_cut_picture(result.mesh, io::middle_z(result.mesh), quality.quality, options.svg);
+  if (result.stats.refinement.bound_reached) {
+    std::fprintf(stderr, "warning: the refinement stopped at --max-steiner %llu points, short of --size; the mesh was written\n",
+                 static_cast<unsigned long long>(options.max_steiner));
+    return 4;
+  }
   return 0;
 }
 

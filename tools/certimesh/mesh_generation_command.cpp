@@ -154,11 +154,11 @@ int mesh_point_set(const MeshOptions& options, const io::MeshData& points) {
   return 0;
 }
 
-bool is_point_set(const io::MeshData& m) {
-  return m.segments.empty() && m.triangles.empty() && m.tetrahedra.empty() && m.point_count() > 0;
-}
-
 }  // namespace
+
+bool is_point_set(const io::MeshData& m) {
+  return m.segments.empty() && m.triangles.empty() && m.tetrahedra.empty() && m.facets.empty() && m.point_count() > 0;
+}
 
 // Progress on standard error, only for a person at a terminal, at most every 0.2 s.
 generators::ProgressCallback terminal_progress(bool quiet) {

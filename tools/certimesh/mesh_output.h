@@ -16,6 +16,9 @@ generators::ProgressCallback terminal_progress(bool quiet);
 void write_outputs(const MeshOptions& options, const io::MeshData& mesh, const io::MeshData& domain,
                    const certificate::Report& report);
 
+/// Points only: no segment, facet or element (a .node file).
+bool is_point_set(const io::MeshData& m);
+
 /// `certimesh mesh` of a 3D input: a point set (its convex hull). Returns the exit status.
 int mesh_solid_3(const MeshOptions& options, const io::MeshData& input);
 

@@ -39,6 +39,8 @@ class RefinementMesh3 {
   const Point3& point(std::uint32_t v) const { return points_[v]; }
   std::size_t vertex_count() const { return points_.size(); }
   std::size_t tetrahedron_count() const { return live_count_; }
+  /// Whether face i of tetrahedron t is on the solid's boundary (no tetrahedron across).
+  bool is_boundary(std::uint32_t t, int i) const { return adjacent_[4 * std::size_t{t} + static_cast<std::size_t>(i)] == none; }
 
   /// Inserts p, walking from tetrahedron `start`, unless a cavity vertex lies nearer than
   /// `min_distance` or p lies in the diametral ball, scaled by `ball_factor` about its centre,

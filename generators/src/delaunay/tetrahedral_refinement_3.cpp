@@ -112,8 +112,24 @@ class Refinement {
   }
 
   // Input vertices: the mean length of their boundary edges (the faces of one tetrahedron).
+  // Each edge of boundary face i of t, its length added to both ends (every boundary edge is
+  // met twice, from its two faces: the mean is unchanged).
+  void add_boundary_edges(std::uint32_t t, int i, std::vector<double>& sum, std::vector<std::uint32_t>& count) const {
+    const std::uint32_t* c = mesh_.corners(t);
+    std::uint32_t f[3];
+    for (int k = 0, m = 0; k < 4; ++k)
+      if (k != i) f[m++] = c[k];
+    for (int a = 0; a < 3; ++a) {
+      const std::uint32_t u = f[a], v = f[(a + 1) % 3];
+      const double l = length(minus(mesh_.point(u), mesh_.point(v)));
+      sum[u] += l, sum[v] += l;
+      ++count[u], ++count[v];
+    }
+  }
+
   void initial_sizes() {
     const std::size_t n = mesh_.vertex_count();
+    if (n == 0) return;
     low_ = high_ = mesh_.point(0);
     for (std::uint32_t v = 1; v < n; ++v) {
       const Point3& p = mesh_.point(v);
@@ -127,18 +143,9 @@ class Refinement {
       shortest_input_edge_ = std::min(shortest_input_edge_, s.shortest);
       total_volume_ += volume(mesh_, t);
     }
-    for (const auto& [t, i] : boundary_faces()) {
-      const std::uint32_t* c = mesh_.corners(t);
-      std::uint32_t f[3];
-      for (int k = 0, m = 0; k < 4; ++k)
-        if (k != i) f[m++] = c[k];
-      for (int a = 0; a < 3; ++a) {
-        const std::uint32_t u = f[a], v = f[(a + 1) % 3];
-        const double l = length(minus(mesh_.point(u), mesh_.point(v)));
-        sum[u] += l, sum[v] += l;  // each boundary edge twice: two faces, both ends
-        ++count[u], ++count[v];
-      }
-    }
+    for (std::uint32_t t = 0; t < mesh_.slot_count(); ++t)
+      for (int i = 0; i < 4; ++i)
+        if (mesh_.is_boundary(t, i)) add_boundary_edges(t, i, sum, count);
     const double fallback = options_.uniform_size > 0.0 ? options_.uniform_size : kInfinity;
     size_.assign(n, fallback);
     for (std::size_t v = 0; v < n; ++v)
@@ -148,28 +155,6 @@ class Refinement {
         smallest_size_ = std::min(smallest_size_, size_[v]);
       }
     if (options_.uniform_size > 0.0) smallest_size_ = std::min(smallest_size_, options_.uniform_size);
-  }
-
-  std::vector<std::pair<std::uint32_t, int>> boundary_faces() const {
-    // Faces of one tetrahedron, found from the input: a face key seen once.
-    std::vector<std::pair<std::array<std::uint32_t, 3>, std::pair<std::uint32_t, int>>> keys;
-    for (std::uint32_t t = 0; t < mesh_.slot_count(); ++t)
-      for (int i = 0; i < 4; ++i) {
-        std::array<std::uint32_t, 3> f{};
-        for (int k = 0, m = 0; k < 4; ++k)
-          if (k != i) f[static_cast<std::size_t>(m++)] = mesh_.corners(t)[k];
-        std::sort(f.begin(), f.end());
-        keys.push_back({f, {t, i}});
-      }
-    std::sort(keys.begin(), keys.end());
-    std::vector<std::pair<std::uint32_t, int>> out;
-    for (std::size_t k = 0; k < keys.size();) {
-      std::size_t e = k + 1;
-      while (e < keys.size() && keys[e].first == keys[k].first) ++e;
-      if (e - k == 1) out.push_back(keys[k].second);
-      k = e;
-    }
-    return out;
   }
 
   // A packing bound: points at least `l` apart, each owning a ball of radius l/2 that
