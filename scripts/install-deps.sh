@@ -13,6 +13,7 @@ packages=(
   gappa libcoq-gappa coq                      # filter-bound proofs
   clang libclang-rt-14-dev binutils           # fuzzers, sanitizer runtimes, object-code scan
   lld                                         # the suite links its ~100 executables with it
+  ccache                                      # developers' builds (CMAKE_CXX_COMPILER_LAUNCHER=ccache)
   python3 python3-meshio python3-numpy        # CLI and format tests (/usr/bin/python3)
   time                                        # /usr/bin/time -v in the constant-memory test
   gmsh                                        # interop: Gmsh must read what certimesh writes
