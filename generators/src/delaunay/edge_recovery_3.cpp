@@ -27,25 +27,25 @@ int local_of(const topology::TetrahedralMesh3::Element& t, VertexId v) {
   return static_cast<int>(std::find(t.begin(), t.end(), v) - t.begin());
 }
 
-// The 2-3 flip of the tetrahedra t = (u, face) and beyond = (b, face) when the segment (u, b)
-// crosses the interior of their shared face: the three tetrahedra around the new edge (u, b)
-// are positive exactly then. It removes the crossed face and makes only cells through (u, b).
-void flip_2_3(RecoveryMesh& m, ElementId t, ElementId beyond, VertexId u, VertexId b,
-              const topology::TetrahedralMesh3::Facet& f) {
-  m.mesh.remove_element(t);
-  m.mesh.remove_element(beyond);
+// The face f of t opposite u, crossed by (u, b), removed by a flip that makes only cells
+// through u: the 2-3 flip with the tetrahedron beyond, else the removal of one of f's edges
+// by the fan from u (a 3-2 flip when the edge has three tetrahedra).
+// An edge of f may be on a surface edge already recovered: that one is never removed.
+bool remove_face(RecoveryMesh& m, const Surface3& s, ElementId t, int i, VertexId u,
+                 const topology::TetrahedralMesh3::Facet& f) {
+  if (try_flip_2_3(m, t, i)) return true;
   for (int k = 0; k < 3; ++k) {
-    topology::TetrahedralMesh3::Element n{u, b, f[static_cast<std::size_t>(k)], f[static_cast<std::size_t>((k + 1) % 3)]};
-    const int sign = m.volume(n[0], n[1], n[2], n[3]);
-    if (sign == 0) recovery_invariant_broken("a flat tetrahedron in a 2-3 flip");
-    if (sign < 0) std::swap(n[2], n[3]);
-    m.mesh.add_element(n);
+    const VertexId x = f[static_cast<std::size_t>(k)], y = f[static_cast<std::size_t>((k + 1) % 3)];
+    if (!on_one_surface_edge(m, s, x, y) && try_remove_edge(m, x, y, u)) return true;
   }
+  return false;
 }
 
 // One step of the walk from u towards b along the surface edge e = (a, b); returns the next
 // vertex on (a, b), after splitting what the edge crosses.
-VertexId step(RecoveryMesh& m, const Surface3& s, std::uint32_t e, VertexId u, BoundaryRecoveryCounts& counts) {
+// With `flips` false no flip is tried: the walk then ends within the split bound.
+VertexId step(RecoveryMesh& m, const Surface3& s, std::uint32_t e, VertexId u, bool flips,
+              BoundaryRecoveryCounts& counts) {
   const VertexId a{s.edges[e][0]}, b{s.edges[e][1]};
   const QPoint& qa = m.vertices[a.value].exact;
   const QPoint& qb = m.vertices[b.value].exact;
@@ -64,13 +64,9 @@ VertexId step(RecoveryMesh& m, const Surface3& s, std::uint32_t e, VertexId u, B
     if (outside) continue;
     if (zeros == 0) {  // through the interior of the face opposite u
       const auto f = m.mesh.facet(t, i);
-      const ElementId beyond = m.mesh.neighbour(t, i);
-      if (!beyond.is_none()) {
-        const auto far = m.mesh.vertices(beyond);
-        if (std::find(far.begin(), far.end(), b) != far.end()) {
-          flip_2_3(m, t, beyond, u, b, f);  // (u, b) crosses the shared face: no Steiner point
-          return b;
-        }
+      if (flips && remove_face(m, s, t, i, u, f)) {
+        ++counts.flips;
+        return u;
       }
       const QPoint &x = m.vertices[f[0].value].exact, &y = m.vertices[f[1].value].exact,
                    &z = m.vertices[f[2].value].exact;
@@ -84,6 +80,10 @@ VertexId step(RecoveryMesh& m, const Surface3& s, std::uint32_t e, VertexId u, B
       int k = 0;
       for (int j = 0; j < 4; ++j)
         if (j != i && j != zero[0]) edge[k++] = corners[static_cast<std::size_t>(j)];
+      if (flips && try_remove_edge(m, edge[0], edge[1], u)) {
+        ++counts.flips;
+        return u;
+      }
       const QPoint& off = m.vertices[corners[static_cast<std::size_t>(zero[0])].value].exact;  // not in the plane
       const QPoint &x = m.vertices[edge[0].value].exact, &y = m.vertices[edge[1].value].exact;
       const mpq_class ex = orient_q(qa, qb, off, x), ey = orient_q(qa, qb, off, y);
@@ -113,10 +113,25 @@ VertexId step(RecoveryMesh& m, const Surface3& s, std::uint32_t e, VertexId u, B
 void recover_edges(RecoveryMesh& m, const Surface3& s, BoundaryRecoveryCounts& counts, const ProgressCallback& progress) {
   for (std::uint32_t e = 0; e < s.edges.size(); ++e) {
     const VertexId a{s.edges[e][0]}, b{s.edges[e][1]};
-    const std::size_t bound = m.cell_bound();  // the termination measure of this walk
-    std::size_t steps = 0;
-    for (VertexId u = a; u != b; u = step(m, s, e, u, counts))
+    // Flips first, within a budget (proofs/boundary_recovery_3.md section 2: a flip keeps u
+    // and moves the exit of (a, b) from u's star strictly towards b). A flip can change the
+    // number of cells (a, b) crosses, so the split bound restarts after each; with the
+    // budget spent the walk goes on by splits and advances alone, within that bound.
+    std::size_t flip_budget = 4 * m.cell_bound();
+    std::size_t bound = m.cell_bound(), steps = 0;
+    VertexId u = a;
+    while (u != b) {
+      const std::size_t flips_before = counts.flips;
+      const VertexId next = step(m, s, e, u, flip_budget > 0, counts);
+      if (counts.flips != flips_before) {
+        --flip_budget;
+        bound = m.cell_bound();
+        steps = 0;
+        continue;
+      }
       if (++steps > bound) recovery_invariant_broken("edge recovery exceeded its step bound");
+      u = next;
+    }
     if ((e & 1023) == 0) report(progress, "recovery", e, s.edges.size() + s.triangles.size());
   }
 }

@@ -2,7 +2,8 @@
 // (Algorithm 18's PROCESS_FACES, digest C section 2.2, done triangle by triangle). Once the
 // edges of T are chains of mesh edges (stage 1), T is a union of mesh faces exactly when no
 // mesh edge crosses its relative interior (proofs/boundary_recovery_3.md section 3), so every
-// such edge is split at its exact crossing point with T. The split creates only edges through
+// such edge is removed: by an edge removal with the fan from a corner of T where that is
+// valid (no Steiner point), else split at its exact crossing point with T. The split creates only edges through
 // the new point, which lies in T, so none of them crosses T: the crossing edges of T, found
 // once, are split one by one (each is still an edge when its turn comes, since a split
 // removes only the edge it splits), and the check after that finds none.
@@ -111,6 +112,15 @@ class TriangleCrossings {
   Box box_;
 };
 
+// The crossing edge (p, q) removed by the fan from a corner of the triangle: the new edges all
+// end at that corner, in the triangle's plane, so none crosses the triangle's interior, and
+// the removal removes no other edge (the list found once stays valid).
+bool remove_by_fan_from_corner(RecoveryMesh& m, const TriangleCrossings& triangle, VertexId p, VertexId q) {
+  for (int i = 0; i < 3; ++i)
+    if (try_remove_edge(m, p, q, triangle.corner(i))) return true;
+  return false;
+}
+
 }  // namespace
 
 void recover_faces(RecoveryMesh& m, const Surface3& s, BoundaryRecoveryCounts& counts, const ProgressCallback& progress) {
@@ -120,6 +130,10 @@ void recover_faces(RecoveryMesh& m, const Surface3& s, BoundaryRecoveryCounts& c
     const QPoint a = m.vertices[triangle.corner(0).value].exact, b = m.vertices[triangle.corner(1).value].exact,
                  c = m.vertices[triangle.corner(2).value].exact;
     for (const auto& [p, q] : triangle.find()) {  // the termination measure: this list's length
+      if (remove_by_fan_from_corner(m, triangle, p, q)) {
+        ++counts.flips;
+        continue;
+      }
       const QPoint &qp = m.vertices[p.value].exact, &qq = m.vertices[q.value].exact;
       const mpq_class op = orient_q(a, b, c, qp), oq = orient_q(a, b, c, qq);
       const VertexId edge[2] = {p, q};

@@ -84,6 +84,21 @@ class RecoveryMesh {
   std::size_t cell_bound() const { return mesh.vertex_count() + 10 * mesh.element_count() + 4; }
 };
 
+// Flips (recovery_flips_3.cpp): each is done only when valid (every new tetrahedron positive,
+// the same region filled) and returns whether it was; none adds a vertex.
+/// The 2-3 flip of t and its neighbour across facet i: the face between them is replaced by
+/// the edge from t's corner i to the neighbour's far corner.
+bool try_flip_2_3(RecoveryMesh& m, ElementId t, int i);
+/// Edge removal: the tetrahedra round edge (x, y) are replaced by the fan from `apex` (a
+/// vertex of the edge's ring) over the ring, with x and with y; removes only the edge (x, y)
+/// and the faces through it, adds only cells through `apex`. A ring open on the hull is
+/// removed only where the hull is flat (the 2-2 flip on the hull, and its n-m generalisation).
+bool try_remove_edge(RecoveryMesh& m, VertexId x, VertexId y, VertexId apex);
+
+/// Whether v and w lie on one surface edge (so the mesh edge (v, w), if it is one, is part of
+/// that edge's chain): decided by the vertices' origins.
+bool on_one_surface_edge(const RecoveryMesh& m, const Surface3& s, VertexId v, VertexId w);
+
 /// The vertex record of an exact rational point.
 RecoveryVertex make_vertex(QPoint p, RecoveryVertex::Origin origin, std::uint32_t on);
 /// The vertex record of an input point.

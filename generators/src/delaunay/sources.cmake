@@ -10,6 +10,7 @@ target_sources(certimesh_generators PRIVATE
   ${CMAKE_CURRENT_LIST_DIR}/point_set_3.cpp
   ${CMAKE_CURRENT_LIST_DIR}/refinement_mesh_3.cpp
   ${CMAKE_CURRENT_LIST_DIR}/tetrahedral_refinement_3.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/recovery_flips_3.cpp
   ${CMAKE_CURRENT_LIST_DIR}/recovery_mesh_3.cpp
   ${CMAKE_CURRENT_LIST_DIR}/edge_recovery_3.cpp
   ${CMAKE_CURRENT_LIST_DIR}/face_recovery_3.cpp

@@ -6,9 +6,11 @@
 //
 // Stages:
 //   1. edges:  every surface edge becomes a chain of mesh edges: walk along it from one end
-//              and split the face or edge it crosses at the exact crossing point;
-//   2. faces:  every surface triangle becomes a union of mesh faces: split every mesh edge
-//              that crosses its interior at the exact crossing point;
+//              and remove the face or edge it crosses by a flip (2-3 flip, edge removal)
+//              where one is valid, else split it at the exact crossing point;
+//   2. faces:  every surface triangle becomes a union of mesh faces: every mesh edge that
+//              crosses its interior is removed by an edge removal where one is valid, else
+//              split at the exact crossing point;
 //   3. solid:  keep the tetrahedra where the winding number of the surface is non-zero;
 //   4. trace:  (default) every Steiner point of stages 1-2 (all on the surface) is taken off
 //              it: the surface faces around it are re-triangulated by diagonals without it and
@@ -52,6 +54,7 @@ struct BoundaryRecoveryCounts {
   std::size_t delaunay_tetrahedra = 0;   // of the surface's vertices
   std::size_t edge_steiner_points = 0;   // made on surface edges (stage 1)
   std::size_t face_steiner_points = 0;   // made inside surface triangles (stage 2)
+  std::size_t flips = 0;                 // 2-3 flips and edge removals (stages 1-2), no point made
   std::size_t moved_inside = 0;          // of those, taken off the surface (stage 4)
   std::size_t outside_tetrahedra = 0;    // removed in stage 3
 };
