@@ -29,14 +29,15 @@ int local_of(const topology::TetrahedralMesh3::Element& t, VertexId v) {
 
 // The face f of t opposite u, crossed by (u, b), removed by a flip that makes only cells
 // through u: the 2-3 flip with the tetrahedron beyond, else the removal of one of f's edges
-// by the fan from u (a 3-2 flip when the edge has three tetrahedra).
+// by the fan from u (a 3-2 flip when the edge has three tetrahedra), or by any valid
+// triangulation of its ring that makes the edge (u, b) when b is in that ring.
 // An edge of f may be on a surface edge already recovered: that one is never removed.
-bool remove_face(RecoveryMesh& m, const Surface3& s, ElementId t, int i, VertexId u,
+bool remove_face(RecoveryMesh& m, const Surface3& s, ElementId t, int i, VertexId u, VertexId b,
                  const topology::TetrahedralMesh3::Facet& f) {
   if (try_flip_2_3(m, t, i)) return true;
   for (int k = 0; k < 3; ++k) {
     const VertexId x = f[static_cast<std::size_t>(k)], y = f[static_cast<std::size_t>((k + 1) % 3)];
-    if (!on_one_surface_edge(m, s, x, y) && try_remove_edge(m, x, y, u)) return true;
+    if (!on_one_surface_edge(m, s, x, y) && try_remove_edge(m, x, y, u, b)) return true;
   }
   return false;
 }
@@ -64,7 +65,7 @@ VertexId step(RecoveryMesh& m, const Surface3& s, std::uint32_t e, VertexId u, b
     if (outside) continue;
     if (zeros == 0) {  // through the interior of the face opposite u
       const auto f = m.mesh.facet(t, i);
-      if (flips && remove_face(m, s, t, i, u, f)) {
+      if (flips && remove_face(m, s, t, i, u, b, f)) {
         ++counts.flips;
         return u;
       }
@@ -80,7 +81,7 @@ VertexId step(RecoveryMesh& m, const Surface3& s, std::uint32_t e, VertexId u, b
       int k = 0;
       for (int j = 0; j < 4; ++j)
         if (j != i && j != zero[0]) edge[k++] = corners[static_cast<std::size_t>(j)];
-      if (flips && try_remove_edge(m, edge[0], edge[1], u)) {
+      if (flips && try_remove_edge(m, edge[0], edge[1], u, b, &s)) {
         ++counts.flips;
         return u;
       }
@@ -113,11 +114,12 @@ VertexId step(RecoveryMesh& m, const Surface3& s, std::uint32_t e, VertexId u, b
 void recover_edges(RecoveryMesh& m, const Surface3& s, BoundaryRecoveryCounts& counts, const ProgressCallback& progress) {
   for (std::uint32_t e = 0; e < s.edges.size(); ++e) {
     const VertexId a{s.edges[e][0]}, b{s.edges[e][1]};
-    // Flips first, within a budget (proofs/boundary_recovery_3.md section 2: a flip keeps u
-    // and moves the exit of (a, b) from u's star strictly towards b). A flip can change the
+    // Flips first, within a budget (proofs/boundary_recovery_3.md section 2: a flip that
+    // removes the crossed cell keeps u and moves the exit of (a, b) from u's star strictly
+    // towards b; the flips that only shrink a ring need not). A flip can change the
     // number of cells (a, b) crosses, so the split bound restarts after each; with the
     // budget spent the walk goes on by splits and advances alone, within that bound.
-    std::size_t flip_budget = 4 * m.cell_bound();
+    std::size_t flip_budget = 1024;
     std::size_t bound = m.cell_bound(), steps = 0;
     VertexId u = a;
     while (u != b) {

@@ -29,9 +29,42 @@ bool boxes_meet(const Box& a, const Box& b) {
          a.low.z <= b.high.z && b.low.z <= a.high.z;
 }
 
+// Marks reused from triangle to triangle (a search is local; clearing arrays the size of the
+// mesh for each triangle would make the stage quadratic), and each vertex's side of the
+// current triangle's plane, computed once per search (an exact sign, often of a zero
+// determinant on a flat surface).
+class SearchScratch {
+ public:
+  void start(std::size_t elements, std::size_t vertices) {
+    if (++stamp_ == 0) {  // wrapped: clear once
+      std::fill(element_.begin(), element_.end(), 0);
+      std::fill(vertex_.begin(), vertex_.end(), 0);
+      std::fill(side_stamp_.begin(), side_stamp_.end(), 0);
+      stamp_ = 1;
+    }
+    if (element_.size() < elements) element_.resize(elements, 0);
+    if (vertex_.size() < vertices) vertex_.resize(vertices, 0), side_.resize(vertices, 0), side_stamp_.resize(vertices, 0);
+  }
+  /// true the first time t is seen in this search
+  bool visit(ElementId t) { return std::exchange(element_[t.value], stamp_) != stamp_; }
+  /// true the first time v is expanded in this search
+  bool expand(VertexId v) { return std::exchange(vertex_[v.value], stamp_) != stamp_; }
+  template <class Sign>
+  int side(VertexId v, const Sign& sign) {
+    if (side_stamp_[v.value] != stamp_) side_[v.value] = static_cast<signed char>(sign(v)), side_stamp_[v.value] = stamp_;
+    return side_[v.value];
+  }
+
+ private:
+  std::uint32_t stamp_ = 0;
+  std::vector<std::uint32_t> element_, vertex_, side_stamp_;
+  std::vector<signed char> side_;
+};
+
 class TriangleCrossings {
  public:
-  TriangleCrossings(const RecoveryMesh& m, const std::array<std::uint32_t, 3>& t) : m_(m) {
+  TriangleCrossings(const RecoveryMesh& m, const std::array<std::uint32_t, 3>& t, SearchScratch& scratch)
+      : m_(m), scratch_(scratch) {
     for (int i = 0; i < 3; ++i) corner_[i] = VertexId{t[static_cast<std::size_t>(i)]};
     box_ = box_of(corner_);
   }
@@ -41,10 +74,9 @@ class TriangleCrossings {
   /// through vertex stars from the star of its first corner (the closed tetrahedra meeting a
   /// connected set are connected through shared vertices).
   std::vector<Edge> find() const {
-    std::vector<char> visited(m_.mesh.element_slot_count(), 0);
-    std::vector<char> expanded(m_.mesh.vertex_slot_count(), 0);  // vertices whose star was searched
+    scratch_.start(m_.mesh.element_slot_count(), m_.mesh.vertex_slot_count());
     std::deque<ElementId> queue;
-    for (const ElementId t : m_.star(corner_[0])) visited[t.value] = 1, queue.push_back(t);
+    for (const ElementId t : m_.star(corner_[0])) scratch_.visit(t), queue.push_back(t);
     std::vector<Edge> crossing;
     while (!queue.empty()) {
       const ElementId t = queue.front();
@@ -56,13 +88,9 @@ class TriangleCrossings {
             crossing.push_back(std::minmax(c[static_cast<std::size_t>(i)], c[static_cast<std::size_t>(j)],
                                            [](VertexId x, VertexId y) { return x.value < y.value; }));
       for (const VertexId v : c) {
-        if (expanded[v.value]) continue;
-        expanded[v.value] = 1;
-        for (const ElementId n : m_.star(v)) {
-          if (visited[n.value]) continue;
-          visited[n.value] = 1;
-          if (may_meet(n)) queue.push_back(n);
-        }
+        if (!scratch_.expand(v)) continue;
+        for (const ElementId n : m_.star(v))
+          if (scratch_.visit(n) && may_meet(n)) queue.push_back(n);
       }
     }
     std::sort(crossing.begin(), crossing.end(),
@@ -72,8 +100,7 @@ class TriangleCrossings {
   }
 
   bool crosses(VertexId p, VertexId q) const {
-    const int op = m_.orient(corner_[0], corner_[1], corner_[2], p);
-    const int oq = m_.orient(corner_[0], corner_[1], corner_[2], q);
+    const int op = side(p), oq = side(q);
     if (op * oq >= 0) return false;
     const int s0 = m_.orient(p, q, corner_[0], corner_[1]);
     const int s1 = m_.orient(p, q, corner_[1], corner_[2]);
@@ -101,13 +128,19 @@ class TriangleCrossings {
     if (!boxes_meet(box_of(c), box_)) return false;
     int positive = 0, negative = 0;
     for (const VertexId v : c) {
-      const int o = m_.orient(corner_[0], corner_[1], corner_[2], v);
+      const int o = side(v);
       positive += o > 0, negative += o < 0;
     }
     return positive < 4 && negative < 4;
   }
 
+  // The side of the triangle's plane v is on (orient3d), cached for the current search.
+  int side(VertexId v) const {
+    return scratch_.side(v, [&](VertexId x) { return m_.orient(corner_[0], corner_[1], corner_[2], x); });
+  }
+
   const RecoveryMesh& m_;
+  SearchScratch& scratch_;
   VertexId corner_[3];
   Box box_;
 };
@@ -124,8 +157,15 @@ bool remove_by_fan_from_corner(RecoveryMesh& m, const TriangleCrossings& triangl
 }  // namespace
 
 void recover_faces(RecoveryMesh& m, const Surface3& s, BoundaryRecoveryCounts& counts, const ProgressCallback& progress) {
+  SearchScratch scratch;
   for (std::uint32_t f = 0; f < s.triangles.size(); ++f) {
-    const TriangleCrossings triangle(m, s.triangles[f]);
+    // Already a mesh face (the common case after the flips of stage 1): a mesh edge cannot
+    // cross a mesh face's interior, so there is nothing to recover, and no search is needed
+    // (the search costs exact signs of every point near the triangle's plane, all zero on a
+    // flat part of the surface).
+    const auto& corners = s.triangles[f];
+    if (m.mesh.find_facet({VertexId{corners[0]}, VertexId{corners[1]}, VertexId{corners[2]}})) continue;
+    const TriangleCrossings triangle(m, s.triangles[f], scratch);
     // Copies: a split appends to m.vertices, which may move its elements.
     const QPoint a = m.vertices[triangle.corner(0).value].exact, b = m.vertices[triangle.corner(1).value].exact,
                  c = m.vertices[triangle.corner(2).value].exact;

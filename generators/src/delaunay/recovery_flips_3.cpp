@@ -5,6 +5,7 @@
 // Each flip is done only when every new tetrahedron is positive by an exact sign and the new
 // tetrahedra fill exactly the region of the old ones (proofs/boundary_recovery_3.md §1a).
 #include <algorithm>
+#include <cstdint>
 #include <optional>
 #include <utility>
 
@@ -56,11 +57,6 @@ EdgeRing ring_of(const RecoveryMesh& m, VertexId x, VertexId y) {
   return r;
 }
 
-bool all_positive(const RecoveryMesh& m, const std::vector<Element>& tetrahedra) {
-  return std::all_of(tetrahedra.begin(), tetrahedra.end(),
-                     [&](const Element& t) { return m.volume(t[0], t[1], t[2], t[3]) > 0; });
-}
-
 void replace(RecoveryMesh& m, const std::vector<ElementId>& old, const std::vector<Element>& fresh) {
   for (const ElementId t : old) m.mesh.remove_element(t);
   for (const Element& t : fresh) m.mesh.add_element(t);
@@ -75,6 +71,78 @@ bool hull_quad_flips(const RecoveryMesh& m, VertexId x, VertexId y, VertexId r0,
   const int sx = m.orient(r0, rk, off, x), sy = m.orient(r0, rk, off, y);
   return s0 != 0 && s0 == -sk && sx != 0 && sx == -sy;
 }
+
+// Triangulations of the polygon of an edge's ring (closed by the hull side r_{n-1} r_0 when the
+// ring is open): each triangle (r_i, r_j, r_k), i < j < k in ring order, stands for the
+// tetrahedra (r_i, r_j, r_k, y) and (r_j, r_i, r_k, x), positive with (x, y, r_i, r_{i+1}) for
+// a valid replacement; a triangulation is usable when all of its tetrahedra are positive.
+class RingTriangulation {
+ public:
+  static constexpr std::size_t max_ring = 16;  // the search is cubic in the ring's length
+
+  RingTriangulation(const RecoveryMesh& m, VertexId x, VertexId y, const std::vector<VertexId>& ring)
+      : m_(m), x_(x), y_(y), ring_(ring), n_(ring.size()) {}
+
+  /// The fan from ring vertex a, if usable.
+  std::optional<std::vector<Element>> fan(std::size_t a) const {
+    std::vector<Element> out;
+    for (std::size_t s = 1; s + 1 < n_; ++s) {
+      if (!usable(a, a + s, a + s + 1)) return std::nullopt;
+      add(out, a, a + s, a + s + 1);
+    }
+    return out;
+  }
+
+  /// A usable triangulation that has the diagonal (a, b), found by dynamic programming over
+  /// the sub-polygons on either side of it (Klincsek's scheme, as in Shewchuk's edge
+  /// removal), if one exists.
+  std::optional<std::vector<Element>> with_diagonal(std::size_t a, std::size_t b) {
+    if (b < a) std::swap(a, b);
+    choice_.assign(4 * n_ * n_, unknown);
+    if (!solvable(a, b) || !solvable(b, a + n_)) return std::nullopt;
+    std::vector<Element> out;
+    collect(out, a, b);
+    collect(out, b, a + n_);
+    return out;
+  }
+
+ private:
+  static constexpr std::size_t unknown = SIZE_MAX, none = SIZE_MAX - 1;
+
+  VertexId at(std::size_t i) const { return ring_[i % n_]; }
+  bool usable(std::size_t i, std::size_t j, std::size_t k) const {
+    return m_.volume(at(i), at(j), at(k), y_) > 0 && m_.volume(at(j), at(i), at(k), x_) > 0;
+  }
+  void add(std::vector<Element>& out, std::size_t i, std::size_t j, std::size_t k) const {
+    out.push_back({at(i), at(j), at(k), y_});
+    out.push_back({at(j), at(i), at(k), x_});
+  }
+  // Whether the sub-polygon i, i+1, ..., k (unrolled indices, k - i < n) has a usable
+  // triangulation; the apex chosen over the side (i, k) is kept in choice_.
+  bool solvable(std::size_t i, std::size_t k) {
+    if (k - i < 2) return true;
+    std::size_t& c = choice_[i * 2 * n_ + k];
+    if (c == unknown) {
+      c = none;
+      for (std::size_t j = i + 1; j < k && c == none; ++j)
+        if (usable(i, j, k) && solvable(i, j) && solvable(j, k)) c = j;
+    }
+    return c != none;
+  }
+  void collect(std::vector<Element>& out, std::size_t i, std::size_t k) const {
+    if (k - i < 2) return;
+    const std::size_t j = choice_[i * 2 * n_ + k];
+    add(out, i, j, k);
+    collect(out, i, j);
+    collect(out, j, k);
+  }
+
+  const RecoveryMesh& m_;
+  VertexId x_, y_;
+  const std::vector<VertexId>& ring_;
+  std::size_t n_;
+  std::vector<std::size_t> choice_;
+};
 
 }  // namespace
 
@@ -117,27 +185,65 @@ bool try_flip_2_3(RecoveryMesh& m, ElementId t, int i) {
   return true;
 }
 
-bool try_remove_edge(RecoveryMesh& m, VertexId x, VertexId y, VertexId apex) {
-  const EdgeRing r = ring_of(m, x, y);
+namespace {
+
+bool remove_edge_now(RecoveryMesh& m, const EdgeRing& r, VertexId x, VertexId y, VertexId apex,
+                     std::optional<VertexId> target) {
   const std::size_t n = r.ring.size();
   const auto at = std::find(r.ring.begin(), r.ring.end(), apex);
   if (n < 3 || at == r.ring.end()) return false;
   if (!r.closed && !hull_quad_flips(m, x, y, r.ring.front(), r.ring.back(), r.ring[1])) return false;
-  // The fan from the apex over the ring polygon (closed by the hull side (rk, r0) when open):
-  // one triangle per polygon side not through the apex, each with x and with y.
-  const std::size_t j = static_cast<std::size_t>(at - r.ring.begin());
-  std::vector<Element> fresh;
-  for (std::size_t s = 0; s < n; ++s) {
-    const VertexId p = r.ring[s], q = r.ring[(s + 1) % n];
-    if (p == apex || q == apex) continue;
-    // (x, y, p, q) positive with p, q in ring order: so are (apex, p, q, y) and (p, apex, q, x)
-    // when the new tetrahedra are a valid replacement (checked below).
-    fresh.push_back({r.ring[j], p, q, y});
-    fresh.push_back({p, r.ring[j], q, x});
-  }
-  if (!all_positive(m, fresh)) return false;
-  replace(m, r.tetrahedra, fresh);
+  const std::size_t a = static_cast<std::size_t>(at - r.ring.begin());
+  const auto to = target ? std::find(r.ring.begin(), r.ring.end(), *target) : r.ring.end();
+  RingTriangulation polygon(m, x, y, r.ring);
+  std::optional<std::vector<Element>> fresh;
+  if (to != r.ring.end() && to != at && n <= RingTriangulation::max_ring)
+    fresh = polygon.with_diagonal(a, static_cast<std::size_t>(to - r.ring.begin()));
+  else
+    fresh = polygon.fan(a);
+  if (!fresh) return false;
+  replace(m, r.tetrahedra, *fresh);
   return true;
+}
+
+// One flip that takes a vertex r_i out of the ring of (x, y), r_i neither the apex nor the
+// target (whose stars the walk relies on) nor, on an open ring, an end: the 2-3 flip of the
+// face (x, y, r_i), else the removal of the edge (y, r_i) by the fan from x or of (x, r_i) by
+// the fan from y (r_i is then no longer a neighbour of both), never of an edge on the surface.
+bool shrink_ring(RecoveryMesh& m, const Surface3& s, const EdgeRing& r, VertexId x, VertexId y, VertexId apex,
+                 std::optional<VertexId> target) {
+  const std::size_t n = r.ring.size();
+  for (std::size_t i = r.closed ? 0 : 1; i < (r.closed ? n : n - 1); ++i) {
+    const VertexId v = r.ring[i];
+    if (v == apex || (target && v == *target)) continue;
+    // The tetrahedron (x, y, r_{i-1}, r_i) and its neighbour across face (x, y, r_i).
+    for (const ElementId t : r.tetrahedra) {
+      const auto c = m.mesh.vertices(t);
+      const VertexId before = r.ring[(i + n - 1) % n];
+      if (std::find(c.begin(), c.end(), before) == c.end() || std::find(c.begin(), c.end(), v) == c.end()) continue;
+      const int opposite = static_cast<int>(std::find(c.begin(), c.end(), before) - c.begin());
+      if (try_flip_2_3(m, t, opposite)) return true;
+    }
+    // Only where that edge's ring is (r_{i-1}, x or y, r_{i+1}) (a 3-2 flip, or a 2-2 flip on a
+    // flat hull): then the ring of (x, y) loses r_i and gains nothing, so every round shrinks it.
+    for (const auto& [w, other] : {std::pair(y, x), std::pair(x, y)})
+      if (ring_of(m, w, v).ring.size() == 3 && !on_one_surface_edge(m, s, w, v) && try_remove_edge(m, w, v, other))
+        return true;
+  }
+  return false;
+}
+
+}  // namespace
+
+bool try_remove_edge(RecoveryMesh& m, VertexId x, VertexId y, VertexId apex, std::optional<VertexId> target,
+                     const Surface3* shrink) {
+  bool changed = false;
+  for (;;) {  // every round takes one vertex out of the ring (shrink_ring), so it ends
+    const EdgeRing r = ring_of(m, x, y);
+    if (remove_edge_now(m, r, x, y, apex, target)) return true;
+    if (!shrink || r.ring.size() <= 3 || !shrink_ring(m, *shrink, r, x, y, apex, target)) return changed;
+    changed = true;
+  }
 }
 
 }  // namespace certimesh::generators::detail

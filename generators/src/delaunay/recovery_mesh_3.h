@@ -9,6 +9,7 @@
 
 #include <array>
 #include <cstdint>
+#include <optional>
 #include <span>
 #include <stdexcept>
 #include <string>
@@ -89,11 +90,18 @@ class RecoveryMesh {
 /// The 2-3 flip of t and its neighbour across facet i: the face between them is replaced by
 /// the edge from t's corner i to the neighbour's far corner.
 bool try_flip_2_3(RecoveryMesh& m, ElementId t, int i);
-/// Edge removal: the tetrahedra round edge (x, y) are replaced by the fan from `apex` (a
-/// vertex of the edge's ring) over the ring, with x and with y; removes only the edge (x, y)
-/// and the faces through it, adds only cells through `apex`. A ring open on the hull is
-/// removed only where the hull is flat (the 2-2 flip on the hull, and its n-m generalisation).
-bool try_remove_edge(RecoveryMesh& m, VertexId x, VertexId y, VertexId apex);
+/// Edge removal: the tetrahedra round edge (x, y) are replaced by a triangulation of its ring
+/// polygon, each triangle with x and with y: when `target` is another vertex of the ring, any
+/// valid triangulation with the diagonal (apex, target) (that edge is made); else the fan from
+/// `apex` (every new cell goes through it). Removes only the edge (x, y) and the faces through
+/// it. A ring open on the hull is removed only where the hull is flat (the 2-2 flip on the
+/// hull, and its n-m generalisation). With `shrink` (the surface, whose edges are kept),
+/// where no triangulation is valid, flips round the edge take one ring vertex (never apex or
+/// target) out at a time -- a 2-3 flip of a face through the edge, else the removal of an
+/// edge from that vertex to x or y -- and the removal is tried again (TetGen's nested flips,
+/// one level). Returns whether the mesh changed: the edge removed, or only such flips made.
+bool try_remove_edge(RecoveryMesh& m, VertexId x, VertexId y, VertexId apex,
+                     std::optional<VertexId> target = std::nullopt, const Surface3* shrink = nullptr);
 
 /// Whether v and w lie on one surface edge (so the mesh edge (v, w), if it is one, is part of
 /// that edge's chain): decided by the vertices' origins.
