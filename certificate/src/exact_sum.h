@@ -6,6 +6,7 @@
 
 #include <gmpxx.h>
 
+#include <algorithm>
 #include <bit>
 #include <climits>
 #include <cmath>
@@ -41,6 +42,25 @@ inline Dyadic abs(Dyadic a) {
 /// moves the sum to GMP. Both paths are exact, and `sign`, `dyadic`, `value` read either.
 class ExactProductSum {
  public:
+  ExactProductSum() = default;
+  // A copy touches GMP only when the sum has spilled there: copying a zero mpz_class allocates a
+  // limb, and the rounding-box tests copy a partial sum per corner.
+  ExactProductSum(const ExactProductSum& o)
+      : small_(o.small_), acc_(o.acc_), small_base_(o.small_base_), count_(o.count_), base_(o.base_), empty_(o.empty_),
+        spilled_(o.spilled_), unit_(o.unit_) {
+    std::copy(o.limb_, o.limb_ + kLimbs, limb_);
+    if (spilled_) sum_ = o.sum_;
+  }
+  ExactProductSum& operator=(const ExactProductSum& o) {
+    if (this != &o) {
+      ExactProductSum copy(o);
+      *this = std::move(copy);
+    }
+    return *this;
+  }
+  ExactProductSum(ExactProductSum&&) noexcept = default;
+  ExactProductSum& operator=(ExactProductSum&&) noexcept = default;
+  ~ExactProductSum() = default;
   /// Adds factor * a * b exactly (a, b finite; factor -2 .. 2).
   void add(double a, double b, int factor = 1) {
     if (a == 0 || b == 0 || factor == 0) return;
@@ -221,7 +241,7 @@ class ExactProductSum {
   mutable long base_ = 0;
   mutable bool empty_ = true;
   bool spilled_ = false;
-  mpz_class sum_ = 0, term_ = 0;
+  mpz_class sum_, term_;  // zero; default-constructed, they allocate nothing until a spill writes them
   long unit_ = LONG_MAX;  // the spilled sum is sum_ * 2^unit_
 };
 

@@ -13,6 +13,7 @@
 #include <set>
 
 #include "certimesh/predicates/orient2d.h"
+#include "next_double.h"
 #include "sweep_2d.h"
 
 namespace certimesh::certificate::detail {
@@ -52,7 +53,7 @@ struct LeftToRight {
 using Status = std::set<Span, LeftToRight>;
 
 double toward(double x, double direction) {
-  const double y = std::nextafter(x, direction);
+  const double y = next_double(x, direction > 0 ? 1 : -1);
   return std::isfinite(y) ? y : x;  // the rounding box ends at x there
 }
 

@@ -194,7 +194,17 @@ class Sweep {
       std::vector<std::uint32_t> fill(ev.first[kind].begin(), ev.first[kind].end() - 1);
       for (std::size_t f = 0; f < segments_.size(); ++f) ev.segment[kind][fill[end_of(f, kind)]++] = static_cast<std::uint32_t>(f);
     }
-    std::sort(ev.order.begin(), ev.order.end(), [&](Index a, Index b) { return lex_less(m_.p2(a), m_.p2(b)) || (m_.p2(a) == m_.p2(b) && a < b); });
+    // Sorted as contiguous (y, x, id) keys: an index sort would read two points per comparison.
+    struct SortKey {
+      double y, x;
+      Index id;
+    };
+    std::vector<SortKey> keys(ev.order.size());
+    for (std::size_t i = 0; i < keys.size(); ++i) keys[i] = {m_.coord(ev.order[i], 1), m_.coord(ev.order[i], 0), ev.order[i]};
+    std::sort(keys.begin(), keys.end(), [](const SortKey& a, const SortKey& b) {
+      return a.y != b.y ? a.y < b.y : (a.x != b.x ? a.x < b.x : a.id < b.id);
+    });
+    for (std::size_t i = 0; i < keys.size(); ++i) ev.order[i] = keys[i].id;
     return ev;
   }
 
