@@ -383,7 +383,7 @@ NearEdges mesh_edges(const MeshView& m, const std::vector<char>& near) {
 // The mesh vertex with exactly the coordinates p, by binary search in the coordinate order.
 std::int64_t find_vertex(const MeshView& m, const std::vector<Index>& lex, const double* p) {
   const auto it = std::lower_bound(lex.begin(), lex.end(), p, [&](Index v, const double* q) {
-    return std::lexicographical_compare(m.xyz + static_cast<std::size_t>(v) * m.dim, m.xyz + (static_cast<std::size_t>(v) + 1) * m.dim, q, q + m.dim);
+    return vertex_order_less(m.xyz + static_cast<std::size_t>(v) * m.dim, q, m.dim);
   });
   return it != lex.end() && std::equal(p, p + m.dim, m.xyz + static_cast<std::size_t>(*it) * m.dim) ? static_cast<std::int64_t>(*it) : -1;
 }
@@ -633,7 +633,7 @@ Finding holes_and_regions_2d(const MeshView& m, const FacetSet& b, const Compone
   for (std::size_t h = 0; h < at.size(); ++h) at[h] = {data.holes[2 * h], data.holes[2 * h + 1]};
   std::vector<SweepAnswer> answers = comps.hole_answers;  // check_single_cover's sweep, when it had them
   if (answers.size() != at.size())
-    if (Finding f = sweep_2d(m, b, Defect::t_junction, Defect::boundary_intersection, "boundary edge", at, answers); f.defect != Defect::none)
+    if (Finding f = sweep_2d(m, b, Defect::t_junction, Defect::boundary_intersection, "boundary edge", at, answers, &lex); f.defect != Defect::none)
       return f;
   std::vector<char> has_hole(comps.facets.size(), 0);
   for (std::size_t h = 0; h < at.size(); ++h) {

@@ -10,9 +10,9 @@ namespace {
 std::string vname(std::int64_t v) { return "vertex " + std::to_string(v); }
 std::string ename(std::size_t e) { return "element " + std::to_string(e); }
 
-// The vertices in coordinate order (ties by index): the coordinates are copied beside each
-// index first, so the sort compares contiguous keys instead of chasing two indices per
-// comparison (it was a tenth of the whole check on the pinwheel).
+// The vertices in coordinate order (ties by index; vertex_order_less): the coordinates are
+// copied beside each index first, so the sort compares contiguous keys instead of chasing two
+// indices per comparison (it was a tenth of the whole check on the pinwheel).
 template <int Dim>
 void sort_by_coordinates(const MeshView& m, std::vector<Index>& order) {
   struct Key {
@@ -21,7 +21,7 @@ void sort_by_coordinates(const MeshView& m, std::vector<Index>& order) {
   };
   std::vector<Key> keys(m.vertex_count);
   for (Index v = 0; v < m.vertex_count; ++v) {
-    for (int k = 0; k < Dim; ++k) keys[v].c[k] = m.coord(v, k);
+    for (int k = 0; k < Dim; ++k) keys[v].c[k] = m.coord(v, Dim == 2 ? 1 - k : k);  // 2D: y first
     keys[v].id = v;
   }
   std::sort(keys.begin(), keys.end(), [](const Key& a, const Key& b) {

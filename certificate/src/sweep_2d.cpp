@@ -104,7 +104,8 @@ using Status = __gnu_pbds::tree<Key, __gnu_pbds::null_type, LeftOf, __gnu_pbds::
 
 class Sweep {
  public:
-  Sweep(const MeshView& m, const FacetSet& set) : m_(m), set_(set), status_(LeftOf{&context_}) {
+  Sweep(const MeshView& m, const FacetSet& set, const std::vector<Index>* vertex_order)
+      : m_(m), set_(set), vertex_order_(vertex_order), status_(LeftOf{&context_}) {
     context_.segments = &segments_;
     segments_.reserve(set.size());
     for (std::size_t f = 0; f < set.size(); ++f) {
@@ -193,6 +194,12 @@ class Sweep {
       ev.segment[kind].resize(segments_.size());
       std::vector<std::uint32_t> fill(ev.first[kind].begin(), ev.first[kind].end() - 1);
       for (std::size_t f = 0; f < segments_.size(); ++f) ev.segment[kind][fill[end_of(f, kind)]++] = static_cast<std::uint32_t>(f);
+    }
+    if (vertex_order_ != nullptr) {  // the endpoints in the given order: no sort
+      ev.order.clear();
+      for (Index v : *vertex_order_)
+        if (used[v]) ev.order.push_back(v);
+      return ev;
     }
     // Sorted as contiguous (y, x, id) keys: an index sort would read two points per comparison.
     struct SortKey {
@@ -290,6 +297,7 @@ class Sweep {
 
   const MeshView& m_;
   const FacetSet& set_;
+  const std::vector<Index>* vertex_order_;  // every vertex in sweep order, or null
   std::vector<Segment> segments_;
   Context context_;
   Status status_;
@@ -303,8 +311,9 @@ class Sweep {
 }  // namespace
 
 Finding sweep_2d(const MeshView& m, const FacetSet& set, Defect touching, Defect crossing, const std::string& what,
-                 const std::vector<std::array<double, 2>>& queries, std::vector<SweepAnswer>& answers) {
-  Sweep sweep(m, set);
+                 const std::vector<std::array<double, 2>>& queries, std::vector<SweepAnswer>& answers,
+                 const std::vector<Index>* vertex_order) {
+  Sweep sweep(m, set, vertex_order);
   const auto [a, b] = sweep.run(queries, answers);
   if (a < 0) return {};
   Finding f = contact_of(m, set, static_cast<std::size_t>(a), static_cast<std::size_t>(b), touching, crossing, what);
