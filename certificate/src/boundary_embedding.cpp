@@ -58,6 +58,16 @@ bool triangles_meet(const MeshView& m, const Index* f, const Index* g) {
 
 bool facets_meet(const MeshView& m, const Index* f, const Index* g) {
   if (m.dim == 3) return triangles_meet(m, f, g);
+  // Two segments from one vertex (same id, so the same point) in directions that are not
+  // collinear meet only there: one orient2d instead of the general test (the sweep tests every
+  // pair of neighbours, and at a pinch or a fan those share their vertex).
+  for (int i = 0; i < 2; ++i)
+    for (int j = 0; j < 2; ++j)
+      if (f[i] == g[j] && f[1 - i] != g[1 - j])
+        return predicates::orient2d(m.p2(f[i]), m.p2(f[1 - i]), m.p2(g[1 - j])) == predicates::Sign::zero &&
+               predicates::segment_segment_2d(std::array<predicates::Vertex2, 2>{{{m.p2(f[0]), f[0]}, {m.p2(f[1]), f[1]}}},
+                                              std::array<predicates::Vertex2, 2>{{{m.p2(g[0]), g[0]}, {m.p2(g[1]), g[1]}}},
+                                              IntersectionMode::exact) == Overlap::intersect;
   const std::array<predicates::Vertex2, 2> s{{{m.p2(f[0]), f[0]}, {m.p2(f[1]), f[1]}}};
   const std::array<predicates::Vertex2, 2> t{{{m.p2(g[0]), g[0]}, {m.p2(g[1]), g[1]}}};
   return predicates::segment_segment_2d(s, t, IntersectionMode::exact) == Overlap::intersect;

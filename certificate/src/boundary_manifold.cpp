@@ -14,6 +14,7 @@
 // section 2: why this pairing keeps the single-cover argument and the hole rules true).
 #include <algorithm>
 #include <numeric>
+#include <vector>
 
 #include "certimesh/predicates/orient2d.h"
 #include "certimesh/predicates/orient3d.h"
@@ -93,7 +94,20 @@ bool leaves(const FacetSet& b, std::size_t f, Index v) { return b.facet(f)[0] ==
 Finding pair_at_pinch_2d(const MeshView& m, const FacetSet& b, Index v, std::size_t* first, std::size_t n, UnionFind& uf,
                          Overlap& overlap) {
   const CcwAround ccw{&m, &b, v};
-  std::sort(first, first + n, ccw);
+  // Sorted as keys that carry their half and far end: CcwAround reads the facet, then both
+  // ends, then the coordinates for every comparison (most of this stage on a pinwheel).
+  struct Spoke {
+    bool upper;
+    predicates::Point2 far;
+    std::size_t facet;
+  };
+  std::vector<Spoke> spokes(n);
+  for (std::size_t i = 0; i < n; ++i) spokes[i] = {ccw.upper(ccw.far(first[i])), m.p2(ccw.far(first[i])), first[i]};
+  const predicates::Point2 centre = m.p2(v);
+  std::sort(spokes.begin(), spokes.end(), [&](const Spoke& f, const Spoke& g) {  // CcwAround's order
+    return f.upper != g.upper ? f.upper : predicates::orient2d(centre, f.far, g.far) == Sign::positive;
+  });
+  for (std::size_t i = 0; i < n; ++i) first[i] = spokes[i].facet;
   for (std::size_t i = 0; i + 1 < n; ++i)
     if (!ccw(first[i], first[i + 1])) {  // the same direction: the two edges overlap (judged first,
       overlap.note(first[i], first[i + 1]);  // as the order of tied edges is arbitrary)

@@ -34,9 +34,21 @@ std::string mesh_sha256(const io::MeshData& mesh) {
   put(static_cast<std::uint32_t>(mesh.dimension));
   put(static_cast<std::uint64_t>(mesh.point_count()));
   put(static_cast<std::uint64_t>(count));
-  for (double x : mesh.coordinates) put(x);
-  for (std::size_t i = 0; i < count * corners; ++i) put(static_cast<std::uint32_t>(cells[i]));
-  for (std::size_t e = 0; e < count; ++e) put(static_cast<std::int32_t>(e < labels.size() ? labels[e] : 0));
+  // On a little-endian host the arrays already are their canonical bytes (f64, u32, i32): hashed
+  // in place instead of copied value by value through the buffer.
+  auto array = [&](const auto& values, std::size_t n) {
+    if constexpr (std::endian::native == std::endian::little) {
+      EVP_DigestUpdate(ctx.get(), buffer.data(), buffer.size()), buffer.clear();
+      EVP_DigestUpdate(ctx.get(), values.data(), n * sizeof(values[0]));
+    } else {
+      for (std::size_t i = 0; i < n; ++i) put(values[i]);
+    }
+  };
+  static_assert(sizeof(double) == 8 && sizeof(io::Index) == 4 && sizeof(io::Label) == 4);
+  array(mesh.coordinates, mesh.coordinates.size());
+  array(cells, count * corners);
+  array(labels, std::min(labels.size(), count));  // labels past the list's end are 0
+  for (std::size_t e = labels.size(); e < count; ++e) put(std::int32_t{0});
   EVP_DigestUpdate(ctx.get(), buffer.data(), buffer.size());
   unsigned char digest[EVP_MAX_MD_SIZE];
   unsigned int length = 0;

@@ -49,7 +49,7 @@ Finding run_stages(const detail::MeshView& m, const io::MeshData* domain, const 
   if (f.defect != Defect::none) return f;
   f = detail::check_boundary_embedding(m, boundary);
   if (f.defect != Defect::none) return f;
-  f = detail::check_single_cover(m, boundary, comps, hole_points_2d(m, domain));
+  f = detail::check_single_cover(m, boundary, comps, hole_points_2d(m, domain), &lex_order);
   if (f.defect != Defect::none || domain == nullptr) return f;
   return detail::check_domain(m, boundary, comps, lex_order, *domain, options.boundary_tolerance, stats);
 }

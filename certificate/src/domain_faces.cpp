@@ -101,9 +101,12 @@ Finding domain_faces_2d(const MeshView& geo, const FacetSet& segments, const std
   const std::size_t component_queries = queries.size();
   for (std::size_t h = 0; h < holes.size() / 2; ++h) queries.push_back({holes[2 * h], holes[2 * h + 1]});
   std::vector<SweepAnswer> answers;
-  if (Finding f = sweep_2d(geo, segments, Defect::invalid_domain, Defect::invalid_domain, "domain segment", queries, answers);
-      f.defect != Defect::none)
+  // The domain's own contact check too (load_domain leaves it to this sweep in 2D).
+  if (Finding f = sweep_2d(geo, segments, Defect::invalid_domain, Defect::invalid_domain, "domain facet", queries, answers);
+      f.defect != Defect::none) {
+    f.message = "the domain is not simple: " + f.message;
     return f;
+  }
   // The face just left of (and infinitesimally above) a query point: the cycle of the hit
   // segment's half-edge that runs downward (its left side faces +x), or the unbounded face.
   const std::size_t unbounded = cycles;

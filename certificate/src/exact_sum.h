@@ -6,6 +6,7 @@
 
 #include <gmpxx.h>
 
+#include <algorithm>
 #include <bit>
 #include <climits>
 #include <cmath>
@@ -41,8 +42,29 @@ inline Dyadic abs(Dyadic a) {
 /// moves the sum to GMP. Both paths are exact, and `sign`, `dyadic`, `value` read either.
 class ExactProductSum {
  public:
-  /// Adds factor * a * b exactly (a, b finite; factor -2 .. 2).
-  void add(double a, double b, int factor = 1) {
+  ExactProductSum() = default;
+  // A copy touches GMP only when the sum has spilled there: copying a zero mpz_class allocates a
+  // limb, and the rounding-box tests copy a partial sum per corner.
+  ExactProductSum(const ExactProductSum& o)
+      : small_(o.small_), acc_(o.acc_), small_base_(o.small_base_), count_(o.count_), base_(o.base_), empty_(o.empty_),
+        spilled_(o.spilled_), unit_(o.unit_) {
+    std::copy(o.limb_, o.limb_ + kLimbs, limb_);
+    if (spilled_) sum_ = o.sum_;
+  }
+  ExactProductSum& operator=(const ExactProductSum& o) {
+    if (this != &o) {
+      ExactProductSum copy(o);
+      *this = std::move(copy);
+    }
+    return *this;
+  }
+  ExactProductSum(ExactProductSum&&) noexcept = default;
+  ExactProductSum& operator=(ExactProductSum&&) noexcept = default;
+  ~ExactProductSum() = default;
+  /// Adds factor * a * b exactly (a, b finite; factor -2 .. 2). The 128-bit path is inlined
+  /// at every call (the rounding-box tests and chain bounds add a few dozen terms per vertex);
+  /// the rest is one call.
+  [[gnu::always_inline]] void add(double a, double b, int factor = 1) {
     if (a == 0 || b == 0 || factor == 0) return;
     long ea = 0, eb = 0;
     const std::int64_t ma = decompose(a, ea), mb = decompose(b, eb);  // a = ma 2^ea, |ma| < 2^53
@@ -56,12 +78,8 @@ class ExactProductSum {
         ++count_;
         return;
       }
-      settle();
     }
-    if (!spilled_ && add_fixed(product, ea + eb)) return;
-    spill();
-    term_ = mpz_of(product);
-    add_term(ea + eb);
+    add_beyond_small(product, ea + eb);
   }
   /// Adds m * 2^exponent exactly.
   void add(const mpz_class& m, long exponent) {
@@ -129,6 +147,14 @@ class ExactProductSum {
   static constexpr int kLimbs = 6;     // 384 bits, two's complement
   static constexpr long kBelow = 96;   // bit 0 is 2^(first exponent - kBelow)
   static constexpr long kReach = 192;  // a term's lowest bit at 0 .. kReach: below 2^(107 + 192)
+  // product 2^e outside the 128-bit stage: the fixed limbs, or GMP.
+  [[gnu::noinline]] void add_beyond_small(Int128 product, long e) {
+    settle();
+    if (!spilled_ && add_fixed(product, e)) return;
+    spill();
+    term_ = mpz_of(product);
+    add_term(e);
+  }
   // A finite double as m 2^e with an integer |m| < 2^53, from its bits (IEEE binary64).
   static std::int64_t decompose(double a, long& e) {
     const auto bits = std::bit_cast<std::uint64_t>(a);
@@ -221,7 +247,7 @@ class ExactProductSum {
   mutable long base_ = 0;
   mutable bool empty_ = true;
   bool spilled_ = false;
-  mpz_class sum_ = 0, term_ = 0;
+  mpz_class sum_, term_;  // zero; default-constructed, they allocate nothing until a spill writes them
   long unit_ = LONG_MAX;  // the spilled sum is sum_ * 2^unit_
 };
 

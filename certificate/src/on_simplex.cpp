@@ -11,6 +11,7 @@
 #include "certimesh/predicates/orient2d.h"
 #include "certimesh/predicates/orient3d.h"
 #include "exact_sum.h"
+#include "next_double.h"
 #include "rational.h"
 
 namespace certimesh::certificate::detail {
@@ -146,10 +147,9 @@ bool segment_meets_rounding_box(const double* a, const double* b, const double* 
   at_p.add(b[1], a[0], 2), at_p.add(b[0], a[1], -2);
   auto twice_f_at_corner = [&](int towards) {  // +1: the corner where f is largest; -1: smallest
     // f grows with x when b.y < a.y, with y when b.x > a.x; q steps one double that way.
-    const double inf = std::numeric_limits<double>::infinity();
     auto step = [&](double x, int grows) {
       if (grows == 0) return x;
-      const double y = std::nextafter(x, grows * towards > 0 ? inf : -inf);
+      const double y = next_double(x, grows * towards > 0 ? 1 : -1);
       return std::isfinite(y) ? y : x;  // the box ends at x there (half_way)
     };
     const double qx = step(p[0], (b[1] < a[1]) - (b[1] > a[1])), qy = step(p[1], (b[0] > a[0]) - (b[0] < a[0]));
@@ -168,7 +168,7 @@ bool meets_accepted_box(const std::array<const double*, 3>& s, int dim, const do
   // predicates' exact stage, four times, before this test runs all the same.
   if (dim == 2 && !tol.active()) return segment_meets_rounding_box(s[0], s[1], p);
   Box outer;
-  for (int k = 0; k < dim; ++k) outer.lo[k] = std::nextafter(p[k], -HUGE_VAL), outer.hi[k] = std::nextafter(p[k], HUGE_VAL);
+  for (int k = 0; k < dim; ++k) outer.lo[k] = next_down(p[k]), outer.hi[k] = next_up(p[k]);
   if (box_certainly_misses(s, dim, tol.active() ? accepted_bounds(p, dim, tol) : outer)) return false;
   std::vector<Vec> pts;
   for (const double* x : s)

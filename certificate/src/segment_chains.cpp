@@ -15,6 +15,7 @@
 
 #include "certimesh/predicates/orient2d.h"
 #include "exact_sum.h"
+#include "next_double.h"
 #include "rational.h"
 #include "stages.h"
 
@@ -74,7 +75,7 @@ double rounded_up(const Q& q) {
 bool bound_in_double(const MeshView& m, const std::vector<Index>& chain, const std::vector<ExactProductSum>& off, double& out) {
   auto at = [&](Index v) { return m.xyz + 2 * static_cast<std::size_t>(v); };
   const double *a = at(chain.front()), *b = at(chain.back());
-  auto up = [](double x) { return std::nextafter(x, INFINITY); };
+  auto up = [](double x) { return next_up(x); };
   std::vector<double> off_up(chain.size(), 0.0);
   double lo = 0;
   for (std::size_t i = 1; i + 1 < chain.size(); ++i)

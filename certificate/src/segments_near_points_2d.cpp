@@ -13,6 +13,7 @@
 #include <set>
 
 #include "certimesh/predicates/orient2d.h"
+#include "next_double.h"
 #include "sweep_2d.h"
 
 namespace certimesh::certificate::detail {
@@ -52,7 +53,7 @@ struct LeftToRight {
 using Status = std::set<Span, LeftToRight>;
 
 double toward(double x, double direction) {
-  const double y = std::nextafter(x, direction);
+  const double y = next_double(x, direction > 0 ? 1 : -1);
   return std::isfinite(y) ? y : x;  // the rounding box ends at x there
 }
 
@@ -92,10 +93,20 @@ class NearSweep {
     });
     out_.clear();
     std::vector<Status::iterator> where(spans_.size(), status_.end());
+    // A point's two searches start from the same place when no segment ends or starts at its
+    // height (the common case: a Steiner point between a segment's ends): one tree search.
+    std::vector<Status::iterator> found(points_.size(), status_.end());
+    std::vector<std::uint64_t> found_at(points_.size(), 0);
+    std::uint64_t changes = 1;  // status modifications so far; 0 marks "not searched"
     for (const Event& e : events) {
-      if (e.kind == insert) where[e.index] = status_.insert(spans_[e.index]).first;
-      else if (e.kind == remove) status_.erase(where[e.index]);
-      else search(e.index, e.kind == search_upper);
+      if (e.kind == insert) where[e.index] = status_.insert(spans_[e.index]).first, ++changes;
+      else if (e.kind == remove) status_.erase(where[e.index]), ++changes;
+      else {
+        const bool same = e.kind == search_upper && found_at[e.index] == changes;
+        const Status::iterator first = same ? found[e.index] : status_.lower_bound(points_[e.index]);
+        found[e.index] = first, found_at[e.index] = changes;
+        search(e.index, e.kind == search_upper, first);
+      }
     }
     for (std::uint32_t q = 0; q < points_.size(); ++q) horizontal_candidates(q);
     std::sort(out_.begin(), out_.end());  // by point, then segment; a segment of both halves once
@@ -112,12 +123,12 @@ class NearSweep {
 
   // Walks out from p in the status over the half-band [y0, y1] (p.y is one end), collecting
   // segments until one lies strictly beyond p's box of neighbouring doubles across it.
-  void search(std::uint32_t q, bool upper) {
+  // `first`: the first segment with p left of or on it (status_.lower_bound(p)).
+  void search(std::uint32_t q, bool upper, Status::iterator first) {
     const Point2 p = points_[q];
     const double inf = std::numeric_limits<double>::infinity();
     const double y0 = upper ? p.y : toward(p.y, -inf), y1 = upper ? toward(p.y, inf) : p.y;
     const double left = toward(p.x, -inf), right = toward(p.x, inf);
-    const auto first = status_.lower_bound(p);  // the first segment with p left of or on it
     for (auto it = first; it != status_.end(); ++it) {
       if (strictly_beyond(*it, {right, y0}, {right, y1}, Sign::positive)) break;
       out_.push_back({q, it->id});

@@ -11,8 +11,17 @@
 namespace certimesh::certificate::detail {
 
 /// Condition 1 (no_elements .. repeated_vertex). Fills `lex_order`: the vertices sorted by
-/// coordinates, for exact look-up of a point later.
+/// coordinates (vertex_order_less, ties by index), for exact look-up of a point later and, in
+/// 2D, as the plane sweep's event order.
 Finding check_input(const MeshView& m, std::vector<Index>& lex_order);
+
+/// The order of `lex_order` on points: 2D by y, then x (the 2D sweep's order); 3D by x, y, z.
+inline bool vertex_order_less(const double* a, const double* b, int dim) {
+  if (dim == 2) return a[1] != b[1] ? a[1] < b[1] : a[0] < b[0];
+  for (int k = 0; k < 3; ++k)
+    if (a[k] != b[k]) return a[k] < b[k];
+  return false;
+}
 
 /// Condition 2 (duplicate_element, non_manifold_facet, inconsistent_orientation): matches the
 /// facets by a counting sort on their smallest vertex; the unmatched ones become `boundary`.
@@ -61,8 +70,10 @@ Finding contact_of(const MeshView& m, const FacetSet& set, std::size_t i, std::s
 /// Condition 5 (multiple_cover): winding numbers of the components at each other's vertices.
 /// In 2D the sweep that finds them also answers for `hole_points` (the domain's, or none), into
 /// comps.hole_answers, so condition 6 needs no second sweep.
+/// `lex_order` (check_input's), when given, spares the 2D sweep its own sort of the endpoints.
 Finding check_single_cover(const MeshView& m, const FacetSet& boundary, Components& comps,
-                           const std::vector<std::array<double, 2>>& hole_points = {});
+                           const std::vector<std::array<double, 2>>& hole_points = {},
+                           const std::vector<Index>* lex_order = nullptr);
 
 /// Exact winding number of component `c` around point `p` (off it); the sign of the area /
 /// volume enclosed by closed oriented facets (filtered, then exact).

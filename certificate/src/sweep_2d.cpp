@@ -1,9 +1,19 @@
 // The 2D plane sweep (sweep_2d.h). Events in lexicographic (y, x) order: at each point, the
 // segments ending there leave the status, those starting there enter it, then the queries
 // there are answered. The status is a red-black tree (GNU pb_ds) ordered left to right along
-// the sweep line, each node carrying the sum of its subtree's weights (+1 for a segment
-// oriented downward, -1 upward, 0 horizontal): the signed crossings of a leftward ray are a
-// prefix sum, found in one descent.
+// the sweep line. The signed crossings of a leftward ray (weights +1 for a segment oriented
+// downward, -1 upward, 0 horizontal) are a prefix sum over the status; instead of keeping
+// subtree sums in the tree (their update, every ancestor of every inserted or erased node,
+// was half of the sweep), each segment records once, when its entering event is complete,
+// the prefix sum up to and including itself (`right_of`): its left neighbour's record plus
+// its own weight. For a closed set of segments (every vertex entered as often as left, as the
+// mesh boundary is from condition 4) that record stays the prefix sum for every later query
+// point right of the segment until it leaves: a vertex event left of it changes the sum only
+// where horizontal segments there leave and enter unevenly, and over a connected run of
+// horizontal segments (all on one line left of it, processed one after the other, with only
+// points on the run in between) those changes cancel. So the answer for a query is its left
+// neighbour's record. For a set that is not closed (the domain's segments may dangle) the
+// winding is not meaningful; only `left_facet` and `on_facet` are read there.
 //
 // Why the order is consistent: until the first contact, the segments in the status are
 // pairwise disjoint apart from shared endpoints, and two such segments that both cross the
@@ -90,25 +100,12 @@ struct LeftOf {
   }
 };
 
-template <class NodeCIt, class NodeIt, class CmpFn, class Alloc>
-struct SubtreeWeight {
-  using metadata_type = int;
-  void operator()(NodeIt it, NodeCIt end) {
-    int sum = (*it)->weight;
-    if (it.get_l_child() != end) sum += it.get_l_child().get_metadata();
-    if (it.get_r_child() != end) sum += it.get_r_child().get_metadata();
-    const_cast<int&>(it.get_metadata()) = sum;
-  }
-  virtual NodeCIt node_begin() const = 0;
-  virtual NodeCIt node_end() const = 0;
-  virtual ~SubtreeWeight() = default;
-};
-
-using Status = __gnu_pbds::tree<Key, __gnu_pbds::null_type, LeftOf, __gnu_pbds::rb_tree_tag, SubtreeWeight>;
+using Status = __gnu_pbds::tree<Key, __gnu_pbds::null_type, LeftOf, __gnu_pbds::rb_tree_tag, __gnu_pbds::null_node_update>;
 
 class Sweep {
  public:
-  Sweep(const MeshView& m, const FacetSet& set) : m_(m), set_(set), status_(LeftOf{&context_}) {
+  Sweep(const MeshView& m, const FacetSet& set, const std::vector<Index>* vertex_order)
+      : m_(m), set_(set), vertex_order_(vertex_order), status_(LeftOf{&context_}) {
     context_.segments = &segments_;
     segments_.reserve(set.size());
     for (std::size_t f = 0; f < set.size(); ++f) {
@@ -132,6 +129,8 @@ class Sweep {
     });
     answers.assign(queries.size(), {});
     where_.assign(segments_.size(), status_.end());
+    right_of_.assign(segments_.size(), 0);
+    fresh_.assign(segments_.size(), 0);
     std::size_t next_query = 0;
     auto answer_until = [&](auto&& before_or_at) {
       for (; next_query < by_point.size() && before_or_at(query_at(by_point[next_query])); ++next_query)
@@ -146,6 +145,7 @@ class Sweep {
         answer_until([&](const Point2& q) { return q == here; });
         continue;
       }
+      entered_.clear();
       for (int kind = 0; kind < 2; ++kind)  // at one point: the segments ending there leave, then those starting enter
         for (std::size_t k = i; k < j; ++k)
           for (std::uint32_t f : events.at(kind, events.order[k])) {
@@ -153,6 +153,7 @@ class Sweep {
             if (found_a_ >= 0) return {found_a_, found_b_};
             if (context_.contact_a >= 0) return {context_.contact_a, context_.contact_b};
           }
+      record_entered();
       answer_until([&](const Point2& q) { return q == here; });
     }
     answer_until([](const Point2&) { return true; });
@@ -194,7 +195,23 @@ class Sweep {
       std::vector<std::uint32_t> fill(ev.first[kind].begin(), ev.first[kind].end() - 1);
       for (std::size_t f = 0; f < segments_.size(); ++f) ev.segment[kind][fill[end_of(f, kind)]++] = static_cast<std::uint32_t>(f);
     }
-    std::sort(ev.order.begin(), ev.order.end(), [&](Index a, Index b) { return lex_less(m_.p2(a), m_.p2(b)) || (m_.p2(a) == m_.p2(b) && a < b); });
+    if (vertex_order_ != nullptr) {  // the endpoints in the given order: no sort
+      ev.order.clear();
+      for (Index v : *vertex_order_)
+        if (used[v]) ev.order.push_back(v);
+      return ev;
+    }
+    // Sorted as contiguous (y, x, id) keys: an index sort would read two points per comparison.
+    struct SortKey {
+      double y, x;
+      Index id;
+    };
+    std::vector<SortKey> keys(ev.order.size());
+    for (std::size_t i = 0; i < keys.size(); ++i) keys[i] = {m_.coord(ev.order[i], 1), m_.coord(ev.order[i], 0), ev.order[i]};
+    std::sort(keys.begin(), keys.end(), [](const SortKey& a, const SortKey& b) {
+      return a.y != b.y ? a.y < b.y : (a.x != b.x ? a.x < b.x : a.id < b.id);
+    });
+    for (std::size_t i = 0; i < keys.size(); ++i) ev.order[i] = keys[i].id;
     return ev;
   }
 
@@ -207,8 +224,27 @@ class Sweep {
   void enter(std::uint32_t f) {
     const auto it = status_.insert(Key{f, segments_[f].weight, segments_[f]}).first;
     where_[f] = it;
+    fresh_[f] = 1;
+    entered_.push_back(f);
     test(before(it), it);
     test(it, std::next(it));
+  }
+  // Once a point's segments have all entered: the segments that entered there are neighbours
+  // in the status (a segment between two of them would pass through the point: a contact,
+  // found first), so each run of them takes its prefix sums from the record of the segment
+  // left of the run, left to right. Each entered segment is visited once.
+  void record_entered() {
+    for (std::uint32_t f : entered_) {
+      if (!fresh_[f]) continue;
+      Status::iterator it = where_[f];
+      while (it != status_.begin() && fresh_[std::prev(it)->segment]) --it;  // the run's first
+      int sum = it == status_.begin() ? 0 : right_of_[std::prev(it)->segment];
+      for (; it != status_.end() && fresh_[it->segment]; ++it) {
+        sum += it->weight;
+        right_of_[it->segment] = sum;
+        fresh_[it->segment] = 0;
+      }
+    }
   }
   // At a vertex v where exactly one segment e ends and one f starts (a boundary chain passing
   // through v, the common case), f takes e's node: no tree search. The order stays right: every
@@ -218,18 +254,20 @@ class Sweep {
   // after. A g through v's interior is a contact at v: the segments between g and e just before
   // v all pass through v (else a contact below v), so g's neighbour among them meets g at v,
   // and that pair was tested when it became adjacent. f is tested with its new neighbours, as
-  // an insertion would. The weights must agree (the subtree sums stay right); if not, false.
+  // an insertion would, and records its prefix sum from its left neighbour's, as
+  // record_entered does (the weights may differ: nothing else in the tree depends on them).
   template <class Span>
   bool pass_through(const Span& ending, const Span& starting) {
     if (ending.end() - ending.begin() != 1 || starting.end() - starting.begin() != 1) return false;
     const std::uint32_t e = *ending.begin(), f = *starting.begin();
-    if (segments_[e].weight != segments_[f].weight) return false;
     const Status::iterator it = where_[e];
     Key& key = const_cast<Key&>(*it);  // the node's own (non-const) value; the order is kept, as argued
     key.segment = f;
+    key.weight = segments_[f].weight;
     key.s = segments_[f];
     where_[f] = it;
     where_[e] = status_.end();
+    right_of_[f] = (it == status_.begin() ? 0 : right_of_[std::prev(it)->segment]) + key.weight;
     test(before(it), it);
     test(it, std::next(it));
     return true;
@@ -240,40 +278,42 @@ class Sweep {
     status_.erase(it);
     test(left, right);
   }
-  // One descent: the weights of the segments left of the point, and the nearest of them.
+  // One search: the first segment the point is left of or on; the one before it is the nearest
+  // segment left of the point, and its record is the winding there. The point is on a segment
+  // when one of those it is on (they follow each other) has it beyond its lower end.
   SweepAnswer answer(const Point2& q) {
     context_.point = q;
-    const LeftOf left_of{&context_};
     SweepAnswer out;
-    for (auto node = status_.node_begin(); node != status_.node_end();) {
-      const Key& k = **node;
-      if (left_of.point_left_of(k)) {
-        if (side(k.s, q) == Sign::zero && !(k.s.lo == q))
-          out.on_facet = true;
-        node = node.get_l_child();
-        continue;
-      }
-      out.winding += k.weight + (node.get_l_child() != status_.node_end() ? node.get_l_child().get_metadata() : 0);
-      out.left_facet = k.segment;
-      node = node.get_r_child();
+    Status::iterator it = status_.lower_bound(Key{UINT32_MAX, 0, {}});
+    if (it != status_.begin()) {
+      const Key& left = *std::prev(it);
+      out.left_facet = left.segment;
+      out.winding = right_of_[left.segment];
     }
+    for (; it != status_.end() && side(it->s, q) == Sign::zero; ++it)
+      if (!(it->s.lo == q)) out.on_facet = true;
     return out;
   }
 
   const MeshView& m_;
   const FacetSet& set_;
+  const std::vector<Index>* vertex_order_;  // every vertex in sweep order, or null
   std::vector<Segment> segments_;
   Context context_;
   Status status_;
   std::vector<Status::iterator> where_;
+  std::vector<int> right_of_;                // per segment in the status: the prefix sum up to it
+  std::vector<char> fresh_;                  // entered at the current point, not yet recorded
+  std::vector<std::uint32_t> entered_;       // the segments that entered at the current point
   std::int64_t found_a_ = -1, found_b_ = -1;
 };
 
 }  // namespace
 
 Finding sweep_2d(const MeshView& m, const FacetSet& set, Defect touching, Defect crossing, const std::string& what,
-                 const std::vector<std::array<double, 2>>& queries, std::vector<SweepAnswer>& answers) {
-  Sweep sweep(m, set);
+                 const std::vector<std::array<double, 2>>& queries, std::vector<SweepAnswer>& answers,
+                 const std::vector<Index>* vertex_order) {
+  Sweep sweep(m, set, vertex_order);
   const auto [a, b] = sweep.run(queries, answers);
   if (a < 0) return {};
   Finding f = contact_of(m, set, static_cast<std::size_t>(a), static_cast<std::size_t>(b), touching, crossing, what);

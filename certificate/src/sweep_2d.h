@@ -33,7 +33,10 @@ struct SweepAnswer {
 /// Runs the sweep over the segments of `set` (2D; endpoint ids into m, distinct points).
 /// Returns the first contact found as a Finding (`touching` when a vertex of one segment lies
 /// on the other, else `crossing`); when there is none, fills `answers` for `queries`.
+/// `vertex_order`, when given, is every vertex of m in sweep order, ties by index (check_input's
+/// lex_order in 2D): the endpoints are then taken from it instead of sorted.
 Finding sweep_2d(const MeshView& m, const FacetSet& set, Defect touching, Defect crossing, const std::string& what,
-                 const std::vector<std::array<double, 2>>& queries, std::vector<SweepAnswer>& answers);
+                 const std::vector<std::array<double, 2>>& queries, std::vector<SweepAnswer>& answers,
+                 const std::vector<Index>* vertex_order = nullptr);
 
 }  // namespace certimesh::certificate::detail

@@ -124,13 +124,13 @@ Finding cover_defect(const FacetSet& b, const Components& comps, std::size_t c, 
 // vertex comes earlier in that order, so resolving `around` in that order needs no recursion
 // (`around` of a cavity is not used).
 Finding single_cover_2d(const MeshView& m, const FacetSet& b, Components& comps,
-                        const std::vector<std::array<double, 2>>& hole_points) {
+                        const std::vector<std::array<double, 2>>& hole_points, const std::vector<Index>* lex_order) {
   const std::size_t n = comps.facets.size();
   std::vector<std::array<double, 2>> at(n);
   for (std::size_t c = 0; c < n; ++c) at[c] = {m.coord(comps.vertex[c], 0), m.coord(comps.vertex[c], 1)};
   at.insert(at.end(), hole_points.begin(), hole_points.end());
   std::vector<SweepAnswer> answers;
-  Finding f = sweep_2d(m, b, Defect::t_junction, Defect::boundary_intersection, "boundary edge", at, answers);
+  Finding f = sweep_2d(m, b, Defect::t_junction, Defect::boundary_intersection, "boundary edge", at, answers, lex_order);
   if (f.defect != Defect::none) return f;
   comps.hole_answers.assign(answers.begin() + static_cast<std::ptrdiff_t>(n), answers.end());
   at.resize(n);
@@ -155,8 +155,8 @@ Finding single_cover_2d(const MeshView& m, const FacetSet& b, Components& comps,
 // of C), and both sides must be 0 or 1. 2D: a plane sweep, O(B log B) whatever the nesting;
 // 3D: per component, the components whose box holds its vertex (O(k B) in the worst case).
 Finding check_single_cover(const MeshView& m, const FacetSet& b, Components& comps,
-                           const std::vector<std::array<double, 2>>& hole_points) {
-  if (m.dim == 2) return single_cover_2d(m, b, comps, hole_points);
+                           const std::vector<std::array<double, 2>>& hole_points, const std::vector<Index>* lex_order) {
+  if (m.dim == 2) return single_cover_2d(m, b, comps, hole_points, lex_order);
   const std::size_t n = comps.facets.size();
   comps.enclosed_by.assign(n, {});
   for (std::size_t c = 0; c < n; ++c) {

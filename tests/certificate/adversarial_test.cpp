@@ -5,6 +5,7 @@
 #include <gmpxx.h>
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <random>
 #include <vector>
@@ -633,6 +634,106 @@ TEST(CertificateAdversary, StripsCrossingWhereBoundariesRunStraight) {
     crossing += d == "boundary_intersection";
   }
   EXPECT_GT(crossing, 200);  // most trials cross properly (no vertex exactly on the other strip)
+}
+// Random rectangles (two triangles each) and right triangles with corners on a small integer
+// grid, sharing vertex ids where they share corners: disjoint, nested, touching at corners,
+// sharing whole edges, overlapping. Nearly every boundary edge is horizontal or vertical, the
+// case where the 2D sweep's recorded prefix sums (sweep_2d.cpp) must survive horizontal runs;
+// nesting without contact is caught only by those winding numbers. The oracle: how many
+// triangles contain each of a lattice of sample points (exact rationals; the points are off
+// every grid line and diagonal), and whether the shapes are conforming (no corner inside
+// another shape's boundary edge, no two boundary edges crossing or overlapping). Certified
+// implies no point covered twice; conforming and no point covered twice implies certified.
+TEST(CertificateAdversary, RectanglesNestedTouchingAndOverlapping) {
+  std::mt19937 rng(20261202);
+  int certified = 0, multiple = 0;
+  for (int trial = 0; trial < 400; ++trial) {
+    const int grid = 9;
+    MeshData m;
+    m.dimension = 2;
+    std::vector<std::int64_t> id((grid + 1) * (grid + 1), -1);
+    auto vertex = [&](int x, int y) {
+      std::int64_t& v = id[static_cast<std::size_t>(y * (grid + 1) + x)];
+      if (v < 0) v = static_cast<std::int64_t>(m.point_count()), append(m.coordinates, {double(x), double(y)});
+      return static_cast<Index>(v);
+    };
+    std::vector<std::vector<Index>> loops;  // each shape's boundary, counterclockwise
+    const int shapes = 2 + static_cast<int>(rng() % 3);
+    for (int k = 0; k < shapes; ++k) {
+      int x0 = static_cast<int>(rng() % grid), y0 = static_cast<int>(rng() % grid);
+      int x1 = x0 + 1 + static_cast<int>(rng() % static_cast<unsigned>(grid - x0)), y1 = y0 + 1 + static_cast<int>(rng() % static_cast<unsigned>(grid - y0));
+      if (trial % 2 == 0 && k < 2) {  // every other trial: a shape strictly inside a rectangle
+        x0 = y0 = k == 0 ? 0 : 1 + static_cast<int>(rng() % 3);
+        x1 = y1 = k == 0 ? grid : x0 + 1 + static_cast<int>(rng() % 3);
+      }
+      const unsigned kind = k == 0 && trial % 2 == 0 ? 2 : rng() % 4;
+      auto a = [&] { return vertex(x0, y0); };
+      auto b = [&] { return vertex(x1, y0); };
+      auto c = [&] { return vertex(x1, y1); };
+      auto d = [&] { return vertex(x0, y1); };
+      if (kind == 0) loops.push_back({a(), b(), c()});  // right triangles
+      else if (kind == 1) loops.push_back({a(), c(), d()});
+      else loops.push_back({a(), b(), c(), d()});
+      const std::vector<Index>& l = loops.back();
+      if (l.size() == 3) append(m.triangles, {l[0], l[1], l[2]});
+      else if (rng() % 2) append(m.triangles, {l[0], l[1], l[2], l[0], l[2], l[3]});
+      else append(m.triangles, {l[0], l[1], l[3], l[1], l[2], l[3]});
+    }
+    ASSERT_TRUE(testing::all_elements_positive(m));
+    // Sample points (4i + 1)/16 + 1/97, (4j + 1)/16 + 3/89, in integers over D = 16 * 97 * 89:
+    // off every line through two grid points here (slopes p/q with |p|, |q| <= 9).
+    const std::int64_t D = 16 * 97 * 89;
+    int most = 0;  // the largest number of triangles over one sample point
+    for (int i = 0; i < 4 * grid; ++i)
+      for (int j = 0; j < 4 * grid; ++j) {
+        const std::int64_t px = (4 * i + 1) * 97 * 89 + 16 * 89, py = (4 * j + 1) * 97 * 89 + 16 * 3 * 97;
+        int over = 0;
+        for (std::size_t t = 0; t < m.triangle_count(); ++t) {
+          bool inside = true;
+          for (int e = 0; e < 3 && inside; ++e) {
+            const Index u = m.triangles[3 * t + static_cast<std::size_t>(e)], w = m.triangles[3 * t + static_cast<std::size_t>((e + 1) % 3)];
+            auto at = [&](Index v, int k) { return static_cast<std::int64_t>(m.coordinates[2 * v + static_cast<std::size_t>(k)]) * D; };
+            inside = (at(w, 0) - at(u, 0)) * (py - at(u, 1)) - (at(w, 1) - at(u, 1)) * (px - at(u, 0)) > 0;
+          }
+          over += inside;
+        }
+        most = std::max(most, over);
+      }
+    bool conforming = true;
+    for (std::size_t p = 0; p < loops.size() && conforming; ++p)
+      for (std::size_t q = p + 1; q < loops.size() && conforming; ++q)
+        for (std::size_t i = 0; i < loops[p].size() && conforming; ++i)
+          for (std::size_t j = 0; j < loops[q].size() && conforming; ++j) {
+            const Index a = loops[p][i], b = loops[p][(i + 1) % loops[p].size()];
+            const Index c = loops[q][j], d = loops[q][(j + 1) % loops[q].size()];
+            if (std::minmax(a, b) == std::minmax(c, d)) continue;  // the same edge
+            const Index shared = a == c || a == d ? a : (b == c || b == d ? b : Index(-1));
+            if (shared == Index(-1)) {
+              conforming = !closed_segments_meet(m, a, b, c, d);
+              continue;
+            }
+            // One common end: they meet elsewhere only when collinear and pointing the same way.
+            const Index u = a == shared ? b : a, w = c == shared ? d : c;
+            if (sgn(twice_area(m, shared, u, w)) != 0) continue;
+            const double dot = (m.coordinates[2 * u] - m.coordinates[2 * shared]) * (m.coordinates[2 * w] - m.coordinates[2 * shared]) +
+                               (m.coordinates[2 * u + 1] - m.coordinates[2 * shared + 1]) * (m.coordinates[2 * w + 1] - m.coordinates[2 * shared + 1]);
+            conforming = dot < 0;
+          }
+    const Report r = check_mesh(m);
+    if (r.valid) {
+      EXPECT_LE(most, 1) << "trial " << trial << ": certified, yet a point is covered " << most << " times";
+    }
+    if (conforming && most <= 1) {
+      EXPECT_TRUE(r.valid) << "trial " << trial << ": a conforming single cover refused: " << r.finding.message;
+    }
+    if (conforming && most > 1) {
+      EXPECT_FALSE(r.valid) << "trial " << trial;
+    }
+    certified += r.valid;
+    multiple += conforming && most > 1;
+  }
+  EXPECT_GT(certified, 40);  // both verdicts occur often enough to mean something
+  EXPECT_GT(multiple, 20);   // conforming but nested: only the winding numbers see it
 }
 }  // namespace
 }  // namespace certimesh::certificate::test

@@ -6,17 +6,22 @@
 #include <gmpxx.h>
 #include <gtest/gtest.h>
 
+#include <bit>
+#include <cfloat>
 #include <cmath>
 #include <cstdint>
 #include <random>
 #include <vector>
 
 #include "exact_sum.h"
+#include "next_double.h"
 
 namespace {
 
 using certimesh::certificate::detail::Dyadic;
 using certimesh::certificate::detail::ExactProductSum;
+using certimesh::certificate::detail::next_down;
+using certimesh::certificate::detail::next_up;
 
 mpq_class of_dyadic(const Dyadic& d) {
   mpq_class q(d.m);
@@ -110,6 +115,60 @@ TEST(ExactProductSum, EmptyIsZero) {
   s.add(0.0, 5.0);
   s.add(3.0, 0.0, -1);
   expect_exact(s, 0);
+}
+
+// A copy (which copies GMP state only once the sum has spilled there) is an independent sum:
+// copied after 3 terms (the 128-bit stage), after 20 (the fixed limbs) and after a far term
+// (GMP), then both the copy and the original take different further terms.
+TEST(ExactProductSum, CopiesAtEveryStageAreIndependent) {
+  std::mt19937_64 rng(11);
+  for (int stage = 0; stage < 3; ++stage)
+    for (int trial = 0; trial < 100; ++trial) {
+      ExactProductSum s;
+      mpq_class want = 0;
+      const int terms = stage == 0 ? 3 : 20;
+      for (int i = 0; i < terms; ++i) {
+        const double a = random_double(rng, -20, 20), b = random_double(rng, -20, 20);
+        s.add(a, b);
+        want += mpq_class(a) * mpq_class(b);
+      }
+      if (stage == 2) {
+        s.add(0x1p-600, 0x1p-300);
+        want += mpq_class(0x1p-600) * mpq_class(0x1p-300);
+      }
+      ExactProductSum copy = s;
+      ExactProductSum assigned;
+      assigned.add(1.0, 1.0);
+      assigned = s;
+      mpq_class want_copy = want, want_assigned = want;
+      const double a = random_double(rng, -20, 20), b = random_double(rng, -20, 20);
+      s.add(a, b);
+      want += mpq_class(a) * mpq_class(b);
+      copy.add(b, b, -2);
+      want_copy -= 2 * mpq_class(b) * mpq_class(b);
+      assigned.add(a, a);
+      want_assigned += mpq_class(a) * mpq_class(a);
+      expect_exact(s, want);
+      expect_exact(copy, want_copy);
+      expect_exact(assigned, want_assigned);
+    }
+}
+
+// next_up / next_down against std::nextafter, the oracle: zeros, subnormals, the normal range's
+// ends, the infinities, powers of two (where the step changes), and random bit patterns.
+TEST(NextDouble, MatchesNextafter) {
+  std::vector<double> xs = {0.0, -0.0, 0x1p-1074, -0x1p-1074, 0x1p-1022, -0x1p-1022, 0x1.fffffffffffffp-1023,
+                            1.0, -1.0, 0x1p52, DBL_MAX, -DBL_MAX, INFINITY, -INFINITY, 0.1, -3.5};
+  std::mt19937_64 rng(5);
+  for (int i = 0; i < 100000; ++i) {
+    const double x = std::bit_cast<double>(rng());
+    if (!std::isnan(x)) xs.push_back(x);
+  }
+  for (double x : xs) {
+    const double up = std::nextafter(x, INFINITY), down = std::nextafter(x, -INFINITY);
+    EXPECT_EQ(std::bit_cast<std::uint64_t>(next_up(x)), std::bit_cast<std::uint64_t>(up)) << x;
+    EXPECT_EQ(std::bit_cast<std::uint64_t>(next_down(x)), std::bit_cast<std::uint64_t>(down)) << x;
+  }
 }
 
 }  // namespace
