@@ -298,6 +298,26 @@ Surface star_shaped(const std::vector<P3>& sphere, const std::vector<double>& ra
   return s;
 }
 
+// Boxes with gridded faces and random diagonals (the shape where the Delaunay
+// tetrahedralization's hull triangulation differs from the input's almost everywhere: the
+// flips of proofs/boundary_recovery_3.md section 1a), grid lines at random decimal or dyadic
+// coordinates, some boxes thin.
+RC_GTEST_PROP(br_Random, GriddedBoxesWithRandomDiagonalsAreMeshedExactly, ()) {
+  const auto seed = *rc::gen::arbitrary<std::uint32_t>();
+  const bool dyadic = *rc::gen::arbitrary<bool>();
+  std::mt19937 random(seed);
+  std::array<std::vector<double>, 3> lines;
+  for (auto& axis : lines) {
+    const int n = *rc::gen::inRange(1, 6);
+    std::set<double> values{0.0};
+    while (values.size() < static_cast<std::size_t>(n) + 1)
+      values.insert(dyadic ? std::ldexp(static_cast<double>(random() % 64 + 1), -4) : static_cast<double>(random() % 97 + 1) / 10);
+    axis.assign(values.begin(), values.end());
+  }
+  const Surface s = gridded_box(lines, [&](int, std::size_t, std::size_t) { return random() % 2 == 1; });
+  mesh_and_check(s);
+}
+
 RC_GTEST_PROP(br_Random, StarShapedAndConvexPolyhedraAreMeshedExactly, ()) {
   const int n = *rc::gen::inRange(4, 60);
   const auto seed = *rc::gen::arbitrary<std::uint32_t>();

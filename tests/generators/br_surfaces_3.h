@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <array>
+#include <map>
 #include <cmath>
 #include <cstdint>
 #include <cstdlib>
@@ -155,6 +156,45 @@ inline Surface notched_box(double length, double height, int top, int bottom, do
 // Schönhardt's twisted prism: a triangle at z = 0 and the same triangle turned by `twist`
 // radians at z = 1, each side quad cut by its diagonal that makes a reflex edge. It has no
 // tetrahedralization without a Steiner point.
+// A box whose six faces are grids (the lines at the given coordinates of each axis, sorted,
+// at least two each), every grid square cut by the diagonal `diagonal(face, i, j)` picks (0 or
+// 1): flat faces whose triangulation the Delaunay tetrahedralization of the vertices (many of
+// them cospherical) generally does not have, so recovery must flip or split on the hull.
+template <class Diagonal>
+inline Surface gridded_box(const std::array<std::vector<double>, 3>& lines, Diagonal diagonal) {
+  Surface s;
+  std::map<std::array<std::size_t, 3>, std::uint32_t> index;
+  auto vertex = [&](std::array<std::size_t, 3> i) {
+    auto [it, added] = index.emplace(i, 0);
+    if (added) it->second = s.add({lines[0][i[0]], lines[1][i[1]], lines[2][i[2]]});
+    return it->second;
+  };
+  int face = 0;
+  for (std::size_t axis = 0; axis < 3; ++axis)
+    for (const bool high : {false, true}) {
+      const std::size_t u = (axis + 1) % 3, v = (axis + 2) % 3;
+      const std::size_t level = high ? lines[axis].size() - 1 : 0;
+      P3 out{0, 0, 0};
+      (axis == 0 ? out.x : axis == 1 ? out.y : out.z) = high ? 1 : -1;
+      for (std::size_t i = 0; i + 1 < lines[u].size(); ++i)
+        for (std::size_t j = 0; j + 1 < lines[v].size(); ++j) {
+          auto corner = [&](std::size_t di, std::size_t dj) {
+            std::array<std::size_t, 3> c{};
+            c[axis] = level, c[u] = i + di, c[v] = j + dj;
+            return vertex(c);
+          };
+          const std::uint32_t a = corner(0, 0), b = corner(1, 0), c = corner(1, 1), d = corner(0, 1);
+          if (diagonal(face, i, j)) {
+            s.add_oriented(a, b, c, out), s.add_oriented(a, c, d, out);
+          } else {
+            s.add_oriented(a, b, d, out), s.add_oriented(b, c, d, out);
+          }
+        }
+      ++face;
+    }
+  return s;
+}
+
 inline Surface schonhardt(double twist = 0.5) {
   Surface s;
   for (int i = 0; i < 3; ++i) s.add({std::cos(2 * M_PI * i / 3), std::sin(2 * M_PI * i / 3), 0.0});
