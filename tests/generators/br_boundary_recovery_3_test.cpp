@@ -21,6 +21,7 @@
 #include "certimesh/certificate/check_mesh.h"
 #include "certimesh/generators/delaunay/boundary_recovery_3.h"
 #include "certimesh/generators/delaunay/delaunay_3.h"
+#include "certimesh/generators/delaunay/solid_regions_3.h"
 #include "certimesh/predicates/orient3d.h"
 
 namespace certimesh::testing {
@@ -363,6 +364,76 @@ RC_GTEST_PROP(br_Random, StarShapedAndConvexPolyhedraAreMeshedExactly, ()) {
   const Surface s = star_shaped(sphere, radius);
   mesh_and_check(s);
   RC_ASSERT(!::testing::Test::HasFailure());
+}
+
+}  // namespace
+}  // namespace certimesh::testing
+
+namespace certimesh::testing {
+namespace {
+
+// TetGen's hole and region points (solid_regions_3.h) on a box [0, 4]^3 holding a box [1, 3]^3
+// (both shells outward: an interface, as every nested shell of a .poly/.smesh is). Oracles:
+// the exact volume of the kept tetrahedra and, per tetrahedron, which box its centroid is in
+// (integer corners: the centroid is exact in doubles).
+struct NestedBoxes {
+  Surface surface;
+  generators::Tetrahedralization3 solid;
+  NestedBoxes() {
+    surface = gridded_box({std::vector<double>{0, 4}, {0, 4}, {0, 4}}, [](int, std::size_t, std::size_t) { return true; });
+    surface.append(gridded_box({std::vector<double>{1, 3}, {1, 3}, {1, 3}}, [](int, std::size_t, std::size_t) { return false; }), false);
+    const SolidMesh3 r = tetrahedralize_solid_3(surface.points, surface.triangles);
+    solid.points = r.points;
+    solid.tetrahedra = r.tetrahedra;
+  }
+  bool in_inner_box(const std::array<std::uint32_t, 4>& t) const {
+    double c[3] = {0, 0, 0};
+    for (std::uint32_t v : t) c[0] += solid.points[v].x / 4, c[1] += solid.points[v].y / 4, c[2] += solid.points[v].z / 4;
+    return c[0] > 1 && c[0] < 3 && c[1] > 1 && c[1] < 3 && c[2] > 1 && c[2] < 3;
+  }
+  mpq_class volume6() const {
+    mpq_class v = 0;
+    for (const auto& t : solid.tetrahedra) v += det(solid.points[t[0]], solid.points[t[1]], solid.points[t[2]], solid.points[t[3]]);
+    return v;
+  }
+};
+
+TEST(br_Regions, AHolePointRemovesItsRegionAndARegionPointLabelsIts) {
+  NestedBoxes boxes;
+  ASSERT_TRUE(boxes.volume6() == 6 * 64);
+  const P3 hole{2, 2, 2}, region{0.5, 0.5, 0.5};
+  const double attribute = 7;
+  const auto counts = generators::apply_holes_and_regions_3(boxes.solid, boxes.surface.triangles, {&hole, 1}, {&region, 1}, {&attribute, 1});
+  EXPECT_TRUE(boxes.volume6() == 6 * (64 - 8));
+  EXPECT_GT(counts.hole_tetrahedra, 0u);
+  ASSERT_EQ(boxes.solid.labels.size(), boxes.solid.tetrahedra.size());
+  for (std::size_t t = 0; t < boxes.solid.tetrahedra.size(); ++t) {
+    EXPECT_FALSE(boxes.in_inner_box(boxes.solid.tetrahedra[t])) << t;
+    EXPECT_EQ(boxes.solid.labels[t], 7) << t;
+  }
+}
+
+TEST(br_Regions, TwoRegionPointsLabelTheTwoSidesOfAnInterface) {
+  NestedBoxes boxes;
+  const P3 regions[2] = {{0.5, 0.5, 0.5}, {2, 2, 2}};
+  const double attributes[2] = {7, -9};
+  generators::apply_holes_and_regions_3(boxes.solid, boxes.surface.triangles, {}, regions, attributes);
+  EXPECT_TRUE(boxes.volume6() == 6 * 64);
+  for (std::size_t t = 0; t < boxes.solid.tetrahedra.size(); ++t)
+    EXPECT_EQ(boxes.solid.labels[t], boxes.in_inner_box(boxes.solid.tetrahedra[t]) ? -9 : 7) << t;
+}
+
+TEST(br_Regions, PointsTheRegionsCannotTakeAreRefused) {
+  const P3 outside{9, 9, 9}, on_face{1, 2, 2}, in_hole{2, 2, 2}, inside{0.5, 0.5, 0.5};
+  const double half = 0.5, one = 1;
+  EXPECT_THROW({ NestedBoxes b; generators::apply_holes_and_regions_3(b.solid, b.surface.triangles, {&outside, 1}, {}, {}); },
+               generators::SolidRegionsError);
+  EXPECT_THROW({ NestedBoxes b; generators::apply_holes_and_regions_3(b.solid, b.surface.triangles, {&on_face, 1}, {}, {}); },
+               generators::SolidRegionsError);
+  EXPECT_THROW({ NestedBoxes b; generators::apply_holes_and_regions_3(b.solid, b.surface.triangles, {&in_hole, 1}, {&in_hole, 1}, {&one, 1}); },
+               generators::SolidRegionsError);
+  EXPECT_THROW({ NestedBoxes b; generators::apply_holes_and_regions_3(b.solid, b.surface.triangles, {}, {&inside, 1}, {&half, 1}); },
+               generators::SolidRegionsError);
 }
 
 }  // namespace

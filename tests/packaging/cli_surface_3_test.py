@@ -8,7 +8,7 @@ the surface by default); `certimesh check OUT --domain SURFACE` passes. Surfaces
 ASCII STL and Medit), Schönhardt's twisted prism (needs an interior Steiner point), a cube with
 an inward cavity cube, a finely triangulated cube refined with --size. An open cube and two
 boxes that touch are refused with `error:` naming triangles, exit 1, no file; --max-steiner stops the
-refinement with exit 4 and a certified mesh; a .smesh with a hole point (not meshed yet) is refused by name, exit 2, no file.
+refinement with exit 4 and a certified mesh; TetGen hole and region points (a cavity made by a hole point, exact volume and labels; points outside, on the surface, or removing everything refused by name, exit 2, no file).
 Usage: cli_surface_3_test.py CERTIMESH.
 """
 import math
@@ -222,14 +222,43 @@ def main():
                 failures.append(f"capped at {cap}: the written mesh fails check --domain")
         if counts[1] - counts[0] != 10:
             failures.append(f"capped: {counts} vertices at --max-steiner 50 and 60")
-        # TetGen hole points are not meshed yet: refused by name, not meshed over.
-        smesh, out = os.path.join(tmp, "hole.smesh"), os.path.join(tmp, "hole_out.mesh")
-        with open(smesh, "w") as f:
-            f.write("8 3 0 0\n" + "".join(f"{i} {i & 1} {(i >> 1) & 1} {i >> 2}\n" for i in range(8)))
-            f.write("6 0\n4 0 2 3 1\n4 4 5 7 6\n4 0 1 5 4\n4 1 3 7 5\n4 3 2 6 7\n4 2 0 4 6\n1\n1 0.5 0.5 0.5\n0\n")
-        run = subprocess.run([certimesh, "mesh", smesh, "-o", out], capture_output=True, text=True, timeout=60)
-        if run.returncode != 2 or "hole points" not in run.stderr or os.path.exists(out):
-            failures.append(f"hole.smesh: exit {run.returncode}, stderr {run.stderr.strip()!r}, written {os.path.exists(out)}")
+        # TetGen hole and region points: a box [0,4]^3 holding a box [1,3]^3 (a .smesh: no
+        # orientation, nested shells are an interface); a hole point in the inner box makes a
+        # cavity (volume 56 exactly), a region point labels the rest 7, check --domain passes.
+        def write_nested_smesh(path, holes, regions):
+            corners = [(x, y, z) for x in (0, 1) for y in (0, 1) for z in (0, 1)]
+            quads = ["0 2 3 1", "4 5 7 6", "0 1 5 4", "2 6 7 3", "0 4 6 2", "1 3 7 5"]
+            with open(path, "w") as f:
+                f.write("16 3 0 0\n")
+                for lo, hi, base in ((0, 4, 0), (1, 3, 8)):
+                    for i, c in enumerate(corners):
+                        f.write(f"{base + i} " + " ".join(str(lo + (hi - lo) * k) for k in c) + "\n")
+                f.write("12 0\n" + "".join("4 " + " ".join(str(int(v) + base) for v in q.split()) + "\n"
+                                           for base in (0, 8) for q in quads))
+                f.write(f"{len(holes)}\n" + "".join(f"{i} {x} {y} {z}\n" for i, (x, y, z) in enumerate(holes)))
+                f.write(f"{len(regions)}\n" + "".join(f"{i} {x} {y} {z} {a} -1\n" for i, (x, y, z, a) in enumerate(regions)))
+        smesh, out = os.path.join(tmp, "cavity_by_hole.smesh"), os.path.join(tmp, "cavity_by_hole.mesh")
+        write_nested_smesh(smesh, [(2, 2, 2)], [(0.5, 0.5, 0.5, 7)])
+        run = subprocess.run([certimesh, "mesh", smesh, "-o", out, "--quiet"], capture_output=True, text=True, timeout=120)
+        if run.returncode != 0:
+            failures.append(f"cavity_by_hole.smesh: exit {run.returncode}: {run.stderr.strip()}")
+        else:
+            mesh_points, tets = read_medit(out)
+            volume = sum(vol6(*(mesh_points[v] for v in t)) for t in tets)
+            labels = set(open(out).read().split("Tetrahedra")[1].split()[1:][4::5][:len(tets)])
+            if volume != 6 * 56 or labels != {"7"}:
+                failures.append(f"cavity_by_hole.smesh: volume {volume / 6} (want 56), labels {labels} (want 7)")
+            if subprocess.run([certimesh, "check", out, "--domain", smesh], capture_output=True, timeout=120).returncode != 0:
+                failures.append("cavity_by_hole.smesh: the mesh fails check --domain")
+        # Points the regions cannot take: refused by name, exit 2, nothing written.
+        for name, holes, regions, says in (("hole_outside", [(9, 9, 9)], [], "outside the solid"),
+                                           ("hole_on_surface", [(1, 2, 2)], [], "lies on a surface triangle"),
+                                           ("every_region_a_hole", [(2, 2, 2), (0.5, 0.5, 0.5)], [], "the solid is empty")):
+            smesh, out = os.path.join(tmp, name + ".smesh"), os.path.join(tmp, name + ".mesh")
+            write_nested_smesh(smesh, holes, regions)
+            run = subprocess.run([certimesh, "mesh", smesh, "-o", out], capture_output=True, text=True, timeout=60)
+            if run.returncode != 2 or says not in run.stderr or os.path.exists(out):
+                failures.append(f"{name}.smesh: exit {run.returncode}, stderr {run.stderr.strip()!r}, written {os.path.exists(out)}")
         refused(certimesh, tmp, "open_cube", box((0, 0, 0), (1, 1, 1))[:-1], failures)
         refused(certimesh, tmp, "touching_boxes", box((0, 0, 0), (1, 1, 1)) + box((1, 0.25, 0.25), (2, 0.75, 0.75)), failures)
     return report(failures)

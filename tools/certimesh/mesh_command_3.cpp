@@ -9,6 +9,7 @@
 
 #include "certimesh/generators/delaunay/boundary_recovery_3.h"
 #include "certimesh/generators/domain/surface_problem_3.h"
+#include "certimesh/generators/delaunay/solid_regions_3.h"
 #include "certimesh/generators/mesh_solid_3.h"
 #include "certimesh/io/svg_cut_3.h"
 #include "certimesh/topology/quality.h"
@@ -86,13 +87,6 @@ int mesh_solid_3(const MeshOptions& options, const io::MeshData& input) {
                  options.domain.c_str());
     return 2;
   }
-  if (!points_only && (input.hole_count() > 0 || !input.region_points.empty())) {
-    std::fprintf(stderr,
-                 "error: %s: %zu hole points and %zu region points: TetGen's holes and regions are not meshed yet "
-                 "(a cavity is an inner shell oriented inward; docs/meshing_3d.md)\n",
-                 options.domain.c_str(), input.hole_count(), input.region_points.size() / 3);
-    return 2;
-  }
   // A point set is refined only when asked, as `tetgen` refines only with -q or -a; a
   // surface always (radius-edge 2, sizes from its own edges, unless told otherwise).
   o.refine = !points_only || options.size > 0.0 || options.radius_edge > 0.0;
@@ -103,6 +97,11 @@ int mesh_solid_3(const MeshOptions& options, const io::MeshData& input) {
                                                       terminal_progress(options.quiet));
   } catch (const generators::InvalidSurface& e) {
     return refuse_surface(options.domain, e);
+  } catch (const generators::SolidRegionsError& e) {
+    std::string why = e.what();
+    if (why.rfind("error: ", 0) == 0) why.erase(0, 7);
+    std::fprintf(stderr, "error: %s: %s (nothing written)\n", options.domain.c_str(), why.c_str());
+    return 2;
   } catch (const generators::BoundaryRecoveryError& e) {
     std::string why = e.what();
     if (why.rfind("error: ", 0) == 0) why.erase(0, 7);  // the message is the library's sentence

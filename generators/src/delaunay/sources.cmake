@@ -15,6 +15,7 @@ target_sources(certimesh_generators PRIVATE
   ${CMAKE_CURRENT_LIST_DIR}/edge_recovery_3.cpp
   ${CMAKE_CURRENT_LIST_DIR}/face_recovery_3.cpp
   ${CMAKE_CURRENT_LIST_DIR}/solid_classification_3.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/solid_regions_3.cpp
   ${CMAKE_CURRENT_LIST_DIR}/steiner_removal_3.cpp
   ${CMAKE_CURRENT_LIST_DIR}/boundary_recovery_3.cpp
 )

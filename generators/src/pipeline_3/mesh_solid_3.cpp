@@ -5,6 +5,7 @@
 
 #include "certimesh/generators/delaunay/boundary_recovery_3.h"
 #include "certimesh/generators/delaunay/delaunay_3.h"
+#include "certimesh/generators/delaunay/solid_regions_3.h"
 #include "certimesh/generators/domain/surface_validation_3.h"
 
 namespace certimesh::generators {
@@ -106,6 +107,14 @@ MeshResult3 mesh_surface_3(Surface3 surface, const MeshOptions3& options, const 
   Tetrahedralization3 solid;
   solid.points = std::move(recovered.points);
   solid.tetrahedra = std::move(recovered.tetrahedra);
+  if (!surface.holes.empty() || !surface.region_points.empty()) {
+    if (options.refine_surface)  // the surface triangles are then unions of faces, not faces
+      throw SolidRegionsError("error: hole and region points with --refine-surface are not supported yet");
+    const SolidRegionCounts regions = apply_holes_and_regions_3(solid, surface.triangles, surface.holes,
+                                                                surface.region_points, surface.region_attributes);
+    result.stats.hole_tetrahedra = regions.hole_tetrahedra;
+    clock.stop("regions");
+  }
   // Surface triangles inside the solid (an interface: solid on both sides) stay faces.
   solid.constrained_faces = surface.triangles;
   if (options.refine) {

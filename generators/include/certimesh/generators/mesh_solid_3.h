@@ -52,6 +52,7 @@ struct MeshStats3 {
   std::size_t interior_steiner_points = 0;  // vertices added inside the solid
   std::size_t boundary_steiner_points = 0;  // vertices added on the boundary (0 by default)
   std::size_t surface_shells = 0, cavities = 0;
+  std::size_t hole_tetrahedra = 0;          // removed by hole points (before refinement)
   TetrahedralRefinementStats refinement;
   std::vector<StageTime> stages;            // in the order they ran
 };
@@ -65,7 +66,9 @@ struct MeshResult3 {
 /// 8): validated (InvalidSurface naming the first problems), the surface recovered exactly --
 /// every input triangle a boundary face with bit-identical vertices, unless refine_surface --
 /// then refined. Input vertices come first in their order; vertices in no triangle are left
-/// out (and counted). Throws BoundaryRecoveryError when the recovery cannot finish.
+/// out (and counted). TetGen's hole points remove their regions and region points label
+/// theirs (solid_regions_3.h). Throws BoundaryRecoveryError when the recovery cannot finish,
+/// SolidRegionsError for a hole or region point it cannot take.
 MeshResult3 mesh_surface_3(Surface3 surface, const MeshOptions3& options, const ProgressCallback& progress = {});
 
 /// The convex hull of the points of `points` (dimension 3), tetrahedralized and refined.
