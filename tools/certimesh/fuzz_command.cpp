@@ -148,9 +148,12 @@ int run_fuzz(const FuzzOptions& o) {
   c.jobs = o.jobs;
   c.keep_going = o.keep_going;
   c.progress_interval = o.progress_interval;
+  char seconds_text[32];
+  std::snprintf(seconds_text, sizeof seconds_text, "%g s", c.seconds);
+  const std::string budget_text = o.cases > 0 ? std::to_string(o.cases) + " cases" : std::string(seconds_text);
   std::fprintf(stderr, "fuzz %s: seed %s, %u job%s, budget %s\n", o.target.c_str(), hex(o.seed).c_str(), o.jobs,
                o.jobs == 1 ? "" : "s",
-               o.cases > 0 ? (std::to_string(o.cases) + " cases").c_str() : (std::to_string(c.seconds) + " s").c_str());
+               budget_text.c_str());
   const fc::CampaignResult r = fc::run_campaign(*target, c, [&](const fc::CampaignProgress& p) {
     std::fprintf(stderr, "fuzz %s: %llu cases, %.0f s, %.0f cases/s, %llu finding%s\n", o.target.c_str(),
                  static_cast<unsigned long long>(p.cases_run), p.seconds,

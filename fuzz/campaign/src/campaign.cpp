@@ -83,6 +83,7 @@ CampaignResult run_campaign(const Target& target, const CampaignOptions& options
     throw std::invalid_argument("run_campaign: neither a cases nor a seconds budget");
   if (options.jobs == 0) throw std::invalid_argument("run_campaign: jobs must be at least 1");
   if (options.chunk == 0) throw std::invalid_argument("run_campaign: chunk must be at least 1");
+  if (!(options.progress_interval > 0.0)) throw std::invalid_argument("run_campaign: progress_interval must be positive");
   Shared shared(target, options, options.cases > 0 ? options.cases : kNone);
 
   const auto start = Clock::now();
@@ -100,29 +101,35 @@ CampaignResult run_campaign(const Target& target, const CampaignOptions& options
       done_cv.notify_all();
     });
 
-  // The calling thread keeps the clock and reports progress.
+  // The calling thread keeps the clock and reports progress. It sleeps until the next
+  // report or the deadline, whichever comes first, or until the last worker is done.
   double next_report = options.progress_interval;
-  {
-    std::unique_lock lock(done_mutex);
-    while (running > 0) {
-      double wake = next_report;
-      if (options.seconds > 0.0) wake = std::min(wake, options.seconds);
+  bool deadline_passed = false;
+  for (;;) {
+    double wake = next_report;
+    if (options.seconds > 0.0 && !deadline_passed) wake = std::min(wake, options.seconds);
+    {
+      std::unique_lock lock(done_mutex);
       const double now = elapsed();
-      if (wake > now) done_cv.wait_for(lock, std::chrono::duration<double>(wake - now));
+      if (running > 0 && wake > now)
+        done_cv.wait_for(lock, std::chrono::duration<double>(wake - now), [&] { return running == 0; });
       if (running == 0) break;
-      const double t = elapsed();
-      if (options.seconds > 0.0 && t >= options.seconds) shared.out_of_time.store(true);
-      if (progress && t >= next_report) {
-        lock.unlock();
+    }
+    const double t = elapsed();
+    if (options.seconds > 0.0 && t >= options.seconds && !deadline_passed) {
+      deadline_passed = true;
+      shared.out_of_time.store(true);
+    }
+    if (t >= next_report) {
+      if (progress) {
         std::uint64_t found = 0;
         {
           std::lock_guard f(shared.findings_mutex);
           found = shared.findings.size();
         }
         progress({shared.cases_run.load(), t, found});
-        lock.lock();
-        next_report = t + options.progress_interval;
       }
+      next_report = t + options.progress_interval;
     }
   }
   for (auto& w : workers) w.join();

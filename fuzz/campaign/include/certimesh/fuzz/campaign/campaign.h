@@ -50,7 +50,7 @@ struct CampaignResult {
 using ProgressCallback = std::function<void(const CampaignProgress&)>;
 
 /// Runs `target` for the budget (at least one of cases, seconds must be set: throws
-/// std::invalid_argument otherwise, or for jobs == 0 or chunk == 0). Stops at the first
+/// std::invalid_argument otherwise, or for jobs == 0, chunk == 0 or progress_interval <= 0). Stops at the first
 /// finding unless keep_going. An exception escaping run_case is a finding ("exception: ...").
 CampaignResult run_campaign(const Target& target, const CampaignOptions& options,
                             const ProgressCallback& progress = {});
