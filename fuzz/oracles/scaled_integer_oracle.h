@@ -10,7 +10,7 @@
 // The matrix is the rational oracle's: rows p_i - p_last (, |p_i - p_last|^2), i < last.
 #pragma once
 
-#include <gmpxx.h>
+#include <gmp.h>
 
 #include <algorithm>
 #include <array>
@@ -66,6 +66,58 @@ T determinant(const M& m, int n) {
 template <class T>
 int sign_of(const T& v) { return v > 0 ? 1 : (v < 0 ? -1 : 0); }
 
+// The same cofactor expansion as determinant() in mpz, into preallocated integers.
+struct MpzWorkspace {
+  mpz_t m[4][4];
+  mpz_t a, b, lift, minor, acc, t;
+  MpzWorkspace() {
+    for (auto& row : m)
+      for (auto& v : row) mpz_init(v);
+    for (mpz_ptr v : {a, b, lift, minor, acc, t}) mpz_init(v);
+  }
+  ~MpzWorkspace() {
+    for (auto& row : m)
+      for (auto& v : row) mpz_clear(v);
+    for (mpz_ptr v : {a, b, lift, minor, acc, t}) mpz_clear(v);
+  }
+  MpzWorkspace(const MpzWorkspace&) = delete;
+  MpzWorkspace& operator=(const MpzWorkspace&) = delete;
+
+  void set_scaled(mpz_ptr out, const Dyadic& c, int emin) {
+    mpz_set_si(out, static_cast<long>(c.mantissa));
+    if (c.mantissa != 0) mpz_mul_2exp(out, out, static_cast<mp_bitcnt_t>(c.exponent - emin));
+  }
+  // out = det of rows r0, r1, r2 and columns 0, 1, 2 (expansion along the first row).
+  void det3(mpz_ptr out, int r0, int r1, int r2) {
+    mpz_set_ui(out, 0);
+    const int cols[3][3] = {{0, 1, 2}, {1, 0, 2}, {2, 0, 1}};
+    for (int j = 0; j < 3; ++j) {
+      const int c0 = cols[j][0], c1 = cols[j][1], c2 = cols[j][2];
+      mpz_mul(t, m[r1][c1], m[r2][c2]);
+      mpz_submul(t, m[r1][c2], m[r2][c1]);
+      if (j == 1) mpz_submul(out, m[r0][c0], t);
+      else mpz_addmul(out, m[r0][c0], t);
+    }
+  }
+  int determinant_sign(int n) {
+    if (n == 2) {
+      mpz_mul(acc, m[0][0], m[1][1]);
+      mpz_submul(acc, m[0][1], m[1][0]);
+    } else if (n == 3) {
+      det3(acc, 0, 1, 2);
+    } else {  // along the last column: signs -, +, -, + for rows 0..3
+      mpz_set_ui(acc, 0);
+      const int rows[4][3] = {{1, 2, 3}, {0, 2, 3}, {0, 1, 3}, {0, 1, 2}};
+      for (int i = 0; i < 4; ++i) {
+        det3(minor, rows[i][0], rows[i][1], rows[i][2]);
+        if (i % 2 == 0) mpz_submul(acc, m[i][3], minor);
+        else mpz_addmul(acc, m[i][3], minor);
+      }
+    }
+    return mpz_sgn(acc);
+  }
+};
+
 }  // namespace scaled_integer_detail
 
 /// The largest |difference| bit length for which the __int128 evaluation cannot overflow,
@@ -116,23 +168,20 @@ int scaled_integer_sign(const std::array<std::array<double, D>, N>& p, bool lift
     return sd::sign_of(sd::determinant<sd::Int128>(m, n));
   }
 
-  std::array<std::array<mpz_class, 4>, 4> m;
-  mpz_class a, b;
-  const auto scaled = [&](mpz_class& out, const sd::Dyadic& c) {
-    out = static_cast<long>(c.mantissa);
-    if (c.mantissa != 0) mpz_mul_2exp(out.get_mpz_t(), out.get_mpz_t(), static_cast<mp_bitcnt_t>(c.exponent - emin));
-  };
+  // GMP path: one workspace per thread, so that after the first calls no evaluation
+  // allocates (allocation was most of the cost of mpz_class temporaries).
+  thread_local sd::MpzWorkspace w;
   for (int i = 0; i < n; ++i) {
-    mpz_class lift = 0;
+    mpz_set_ui(w.lift, 0);
     for (std::size_t k = 0; k < D; ++k) {
-      scaled(a, q[i][k]);
-      scaled(b, q[N - 1][k]);
-      m[i][k] = a - b;
-      lift += m[i][k] * m[i][k];
+      w.set_scaled(w.a, q[i][k], emin);
+      w.set_scaled(w.b, q[N - 1][k], emin);
+      mpz_sub(w.m[i][k], w.a, w.b);
+      mpz_addmul(w.lift, w.m[i][k], w.m[i][k]);
     }
-    if (lifted) m[i][D] = lift;
+    if (lifted) mpz_set(w.m[i][D], w.lift);
   }
-  return sd::sign_of(mpz_class(sd::determinant<mpz_class>(m, n)));
+  return w.determinant_sign(n);
 }
 
 }  // namespace certimesh::testing
