@@ -18,11 +18,13 @@
 
 #include "certimesh/fuzz/campaign/campaign.h"
 #include "certimesh/fuzz/campaign/case_seed.h"
+#include "certimesh/fuzz/campaign/intersection_target.h"
 #include "certimesh/fuzz/campaign/predicates_target.h"
 #include "certimesh/fuzz/campaign/reproducer.h"
 #include "certimesh/fuzz/recipes.h"
 #include "certimesh/predicates/filter_constants.h"
 #include "certimesh/predicates/incircle.h"
+#include "certimesh/predicates/intersection/segment_segment_2d.h"
 #include "certimesh/predicates/orient2d.h"
 #include "certimesh/predicates/orient3d.h"
 #include "rational_oracle.h"
@@ -154,11 +156,46 @@ TEST(Campaign, EveryMutantIsFoundAndItsReproducerReplays) {
   }
 }
 
+// An intersection rule that drops the touching case: segments with an endpoint exactly on
+// the other's line (touching, collinear overlap) answer disjoint, in both modes.
+fc::IntersectionKernel dropped_touching_kernel() {
+  auto k = fc::certimesh_intersection_kernel();
+  k.segment_segment_2d = [](const std::array<pr::Vertex2, 2>& s, const std::array<pr::Vertex2, 2>& t, pr::IntersectionMode m) {
+    const auto on_line = [](const std::array<pr::Vertex2, 2>& l, const pr::Vertex2& v) {
+      return pr::orient2d(l[0].point, l[1].point, v.point) == pr::Sign::zero;
+    };
+    const bool finite = std::isfinite(s[0].point.x + s[0].point.y + s[1].point.x + s[1].point.y + t[0].point.x + t[0].point.y +
+                                      t[1].point.x + t[1].point.y);
+    if (finite && (on_line(s, t[0]) || on_line(s, t[1]) || on_line(t, s[0]) || on_line(t, s[1]))) return pr::Overlap::disjoint;
+    return pr::segment_segment_2d(s, t, m);
+  };
+  return k;
+}
+
+TEST(Campaign, IntersectionMutantIsFoundAndReplays) {
+  const auto target = fc::make_intersection_target(dropped_touching_kernel(), "seg_seg2d-drops-touching", "mutant");
+  const auto t0 = std::chrono::steady_clock::now();
+  const auto r = run(*target, kMutantBudget, 1);
+  const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+  ASSERT_EQ(r.findings.size(), 1u) << "not found within " << kMutantBudget << " cases";
+  const auto& f = r.findings.front();
+  std::printf("mutant %-32s first finding at case %llu (%.0f ms): %s\n", "seg_seg2d-drops-touching",
+              static_cast<unsigned long long>(f.case_index), ms, f.finding.message.c_str());
+  EXPECT_EQ(f.finding.message.rfind("seg_seg2d: ", 0), 0u) << f.finding.message;
+  EXPECT_EQ(target->replay(f.finding.payload), f.finding);
+  EXPECT_EQ(fc::make_intersection_target()->replay(f.finding.payload), std::nullopt);
+}
+
 TEST(Campaign, RealKernelRunsCleanForAFixedSeed) {
-  const auto target = fc::make_predicates_target();
-  const auto r = run(*target, 20000, 2);
-  EXPECT_EQ(r.cases_run, 20000u);
-  for (const auto& f : r.findings) ADD_FAILURE() << "case " << f.case_index << ": " << f.finding.message << "\n  " << f.finding.payload;
+  const auto registry = fc::builtin_targets();
+  ASSERT_EQ(registry.all().size(), 2u);
+  for (const auto& [name, cases] : {std::pair<const char*, std::uint64_t>{"predicates", 20000}, {"intersection", 3000}}) {
+    const fc::Target* target = registry.find(name);
+    ASSERT_NE(target, nullptr) << name;
+    const auto r = run(*target, cases, 2);
+    EXPECT_EQ(r.cases_run, cases) << name;
+    for (const auto& f : r.findings) ADD_FAILURE() << name << " case " << f.case_index << ": " << f.finding.message << "\n  " << f.finding.payload;
+  }
 }
 
 TEST(Campaign, FirstFindingIsTheSameForOneAndTwoJobs) {

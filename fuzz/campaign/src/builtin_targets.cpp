@@ -1,3 +1,4 @@
+#include "certimesh/fuzz/campaign/intersection_target.h"
 #include "certimesh/fuzz/campaign/predicates_target.h"
 #include "certimesh/fuzz/campaign/target.h"
 
@@ -6,6 +7,7 @@ namespace certimesh::fuzz::campaign {
 TargetRegistry builtin_targets() {
   TargetRegistry r;
   r.add(make_predicates_target());
+  r.add(make_intersection_target());
   return r;
 }
 

@@ -56,8 +56,7 @@ class TargetRegistry {
   std::vector<std::unique_ptr<Target>> targets_;
 };
 
-/// The targets `certimesh fuzz` ships: predicates (and intersection when the predicates
-/// library has its intersection tests).
+/// The targets `certimesh fuzz` ships: predicates, intersection.
 TargetRegistry builtin_targets();
 
 }  // namespace certimesh::fuzz::campaign
