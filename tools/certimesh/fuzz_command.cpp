@@ -13,11 +13,8 @@
 #include "certimesh/fuzz/campaign/campaign.h"
 #include "certimesh/fuzz/campaign/reproducer.h"
 #include "certimesh/fuzz/campaign/target.h"
+#include "certimesh_commit.h"  // CERTIMESH_COMMIT, generated at build time
 #include "cli.h"
-
-#ifndef CERTIMESH_COMMIT
-#define CERTIMESH_COMMIT "unknown"
-#endif
 
 namespace certimesh::cli {
 

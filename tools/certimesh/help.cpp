@@ -4,6 +4,7 @@
 #include <string>
 #include <string_view>
 
+#include "certimesh/fuzz/campaign/campaign.h"
 #include "cli.h"
 
 namespace certimesh::cli {
@@ -261,8 +262,9 @@ std::string fuzz_help() {
          "  --cases N            a budget of N cases instead of seconds (default: none)\n"
          "  --seed K             the campaign seed, decimal or 0x hex (default: " + std::to_string(d.seed) + ")\n"
          "  --jobs J             threads (default: " + std::to_string(d.jobs) + ")\n"
-         "  --keep-going         run the whole budget and write every finding (default: stop\n"
-         "                       at the first)\n"
+         "  --keep-going         run the whole budget and write every finding, the lowest " +
+         std::to_string(fuzz::campaign::CampaignOptions{}.max_findings) + "\n"
+         "                       kept (default: stop at the first)\n"
          "  --report R.json      a JSON record: target, commit, seed, jobs, cases, seconds,\n"
          "                       cases/s, findings (default: none)\n"
          "  --out DIR            where reproducers go, as TARGET-seedK-caseI.repro (default: " + d.out + ")\n"
