@@ -25,6 +25,7 @@
 #include "certimesh/predicates/filter_constants.h"
 #include "certimesh/predicates/incircle.h"
 #include "certimesh/predicates/intersection/segment_segment_2d.h"
+#include "certimesh/predicates/intersection/triangle_triangle_3d.h"
 #include "certimesh/predicates/orient2d.h"
 #include "certimesh/predicates/orient3d.h"
 #include "rational_oracle.h"
@@ -126,19 +127,31 @@ fc::CampaignResult run(const fc::Target& t, std::uint64_t cases, unsigned jobs, 
   return fc::run_campaign(t, o);
 }
 
+// A mutant's campaign (kMutantBudget cases, one job), timed and printed for the README's
+// table; the test fails when nothing is found.
+std::optional<fc::CampaignResult> campaign_against(const fc::Target& mutant) {
+  const auto t0 = std::chrono::steady_clock::now();
+  auto r = run(mutant, kMutantBudget, 1);
+  const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+  if (r.findings.size() != 1u) {
+    ADD_FAILURE() << mutant.name() << ": not found within " << kMutantBudget << " cases";
+    return std::nullopt;
+  }
+  const auto& f = r.findings.front();
+  std::printf("mutant %-38s first finding at case %llu (%.0f ms): %s\n", std::string(mutant.name()).c_str(),
+              static_cast<unsigned long long>(f.case_index), ms, f.finding.message.c_str());
+  return r;
+}
+
 TEST(Campaign, EveryMutantIsFoundAndItsReproducerReplays) {
   for (const Mutant& m : kMutants) {
     SCOPED_TRACE(m.name);
     const auto target = fc::make_predicates_target(m.kernel(), m.name, "mutant");
-    const auto t0 = std::chrono::steady_clock::now();
-    const auto r = run(*target, kMutantBudget, 1);
-    const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
-    ASSERT_EQ(r.findings.size(), 1u) << "not found within " << kMutantBudget << " cases";
-    const auto& f = r.findings.front();
-    std::printf("mutant %-32s first finding at case %llu (%.0f ms): %s\n", m.name,
-                static_cast<unsigned long long>(f.case_index), ms, f.finding.message.c_str());
+    const auto r = campaign_against(*target);
+    ASSERT_TRUE(r.has_value());
+    const auto& f = r->findings.front();
     EXPECT_NE(f.finding.message.find(m.expected), std::string::npos) << f.finding.message;
-    EXPECT_EQ(r.cases_run, f.case_index + 1) << "cases after the first finding were run";
+    EXPECT_EQ(r->cases_run, f.case_index + 1) << "cases after the first finding were run";
     EXPECT_EQ(f.case_seed, fc::case_seed(kSeed, f.case_index));
 
     // The reproducer, through its text, replays to the same finding -- from the payload and
@@ -172,18 +185,43 @@ fc::IntersectionKernel dropped_touching_kernel() {
   return k;
 }
 
-TEST(Campaign, IntersectionMutantIsFoundAndReplays) {
-  const auto target = fc::make_intersection_target(dropped_touching_kernel(), "seg_seg2d-drops-touching", "mutant");
-  const auto t0 = std::chrono::steady_clock::now();
-  const auto r = run(*target, kMutantBudget, 1);
-  const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
-  ASSERT_EQ(r.findings.size(), 1u) << "not found within " << kMutantBudget << " cases";
-  const auto& f = r.findings.front();
-  std::printf("mutant %-32s first finding at case %llu (%.0f ms): %s\n", "seg_seg2d-drops-touching",
-              static_cast<unsigned long long>(f.case_index), ms, f.finding.message.c_str());
-  EXPECT_EQ(f.finding.message.rfind("seg_seg2d: ", 0), 0u) << f.finding.message;
-  EXPECT_EQ(target->replay(f.finding.payload), f.finding);
-  EXPECT_EQ(fc::make_intersection_target()->replay(f.finding.payload), std::nullopt);
+// Conservative triangle_triangle_3d that skips the coplanar case: `disjoint` whenever the
+// second triangle lies exactly in the first one's plane (exact mode untouched).
+fc::IntersectionKernel skipped_coplanar_kernel() {
+  auto k = fc::certimesh_intersection_kernel();
+  k.triangle_triangle_3d = [](const std::array<pr::Vertex3, 3>& a, const std::array<pr::Vertex3, 3>& b, pr::IntersectionMode m) {
+    if (m == pr::IntersectionMode::conservative) {
+      bool coplanar = true;
+      for (const auto& v : b)
+        coplanar = coplanar && pr::orient3d_filtered(a[0].point, a[1].point, a[2].point, v.point) == pr::FilteredSign::uncertain &&
+                   std::isfinite(v.point.x + v.point.y + v.point.z) &&
+                   pr::orient3d(a[0].point, a[1].point, a[2].point, v.point) == pr::Sign::zero;
+      if (coplanar) return pr::Overlap::disjoint;
+    }
+    return pr::triangle_triangle_3d(a, b, m);
+  };
+  return k;
+}
+
+TEST(Campaign, IntersectionMutantsAreFoundAndReplay) {
+  const struct {
+    const char* name;
+    fc::IntersectionKernel (*kernel)();
+    const char* expected;
+  } mutants[] = {{"seg_seg2d-drops-touching", dropped_touching_kernel, "seg_seg2d: exact mode says disjoint, the exact oracle intersect"},
+                 {"tri_tri3d-conservative-skips-coplanar", skipped_coplanar_kernel,
+                  "tri_tri3d: conservative mode says disjoint for an intersecting pair"}};
+  for (const auto& m : mutants) {
+    SCOPED_TRACE(m.name);
+    const auto target = fc::make_intersection_target(m.kernel(), m.name, "mutant");
+    const auto r = campaign_against(*target);
+    ASSERT_TRUE(r.has_value());
+    const auto& f = r->findings.front();
+    EXPECT_EQ(f.finding.message, m.expected);
+    EXPECT_EQ(target->replay(f.finding.payload), f.finding);
+    EXPECT_EQ(target->run_case(f.case_seed), f.finding);
+    EXPECT_EQ(fc::make_intersection_target()->replay(f.finding.payload), std::nullopt);
+  }
 }
 
 TEST(Campaign, RealKernelRunsCleanForAFixedSeed) {
