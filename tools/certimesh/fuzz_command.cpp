@@ -1,6 +1,7 @@
 // `certimesh fuzz`: runs a campaign target (fuzz/campaign) for a budget, prints progress on
 // stderr and a summary on stdout, writes a reproducer per finding and optionally a JSON
 // report; `--list` names the targets, `--replay FILE` re-runs one reproducer.
+#include <cerrno>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -9,6 +10,7 @@
 #include <sstream>
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include "certimesh/fuzz/campaign/campaign.h"
 #include "certimesh/fuzz/campaign/reproducer.h"
@@ -120,7 +122,12 @@ int replay(const fc::TargetRegistry& registry, const std::string& path) {
   std::printf("  recorded: %s\n", r.message.c_str());
   std::printf("  now:      %s\n", now ? now->message.c_str() : "no finding (fixed?)");
   // The seed re-derives the case through the generators of this build.
-  const auto again = target->run_case(r.case_seed);
+  std::optional<fc::Finding> again;
+  try {
+    again = target->run_case(r.case_seed);
+  } catch (const std::exception& e) {
+    again = fc::Finding{std::string("exception: ") + e.what(), ""};
+  }
   std::printf("  case-seed %s through this build's generators: %s\n", hex(r.case_seed).c_str(),
               !again ? "no finding"
                      : (again->payload == r.payload ? "the same input" : "a different input (the generators changed)"));
