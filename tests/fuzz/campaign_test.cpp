@@ -15,6 +15,8 @@
 #include <sys/wait.h>
 #include <unistd.h>
 #include <string>
+#include <thread>
+#include <vector>
 
 #include "certimesh/fuzz/campaign/campaign.h"
 #include "certimesh/fuzz/campaign/case_seed.h"
@@ -279,6 +281,37 @@ TEST(Campaign, AThrowingTargetIsAFindingAndBadOptionsAreRefused) {
   EXPECT_EQ(r.findings[0].case_index, first);
   fc::CampaignOptions none;
   EXPECT_THROW(fc::run_campaign(t, none), std::invalid_argument);
+}
+
+// A seconds budget ends at the deadline (a spin once kept a 600 s campaign to 630 s) and
+// reports progress on the calling thread at the interval asked for.
+TEST(Campaign, SecondsBudgetStopsAtTheDeadlineWithProgress) {
+  const auto target = fc::make_predicates_target();
+  fc::CampaignOptions o;
+  o.seconds = 0.5;
+  o.jobs = 2;
+  o.progress_interval = 0.1;
+  std::vector<fc::CampaignProgress> reports;
+  const auto caller = std::this_thread::get_id();
+  bool same_thread = true;
+  const auto t0 = std::chrono::steady_clock::now();
+  const auto r = fc::run_campaign(*target, o, [&](const fc::CampaignProgress& p) {
+    reports.push_back(p);
+    same_thread = same_thread && std::this_thread::get_id() == caller;
+  });
+  const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  EXPECT_GE(wall, 0.5);
+  EXPECT_LT(wall, 2.5) << "the campaign overran its deadline";
+  EXPECT_GT(r.cases_run, 0u);
+  EXPECT_TRUE(r.findings.empty());
+  EXPECT_GE(reports.size(), 2u);
+  EXPECT_TRUE(same_thread);
+  for (std::size_t i = 1; i < reports.size(); ++i) EXPECT_GE(reports[i].cases_run, reports[i - 1].cases_run);
+  // Without a progress callback (the case that hung before the fix).
+  o.seconds = 0.3;
+  const auto t1 = std::chrono::steady_clock::now();
+  EXPECT_GT(fc::run_campaign(*target, o).cases_run, 0u);
+  EXPECT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - t1).count(), 2.3);
 }
 
 TEST(Reproducer, MalformedFilesNameTheLine) {
