@@ -3,7 +3,7 @@
 // The input bytes decode (fuzz/generators recipes.h, decode()) into one predicate and its
 // points -- exactly degenerate, near-degenerate or generic configurations at every scale,
 // and 1 in 32 with a raw bit-pattern coordinate (NaN, Inf, anything). For every input:
-//   - finite input: the filter never contradicts the rational oracle (tests/oracle), the
+//   - finite input: the filter never contradicts the rational oracle (fuzz/oracles), the
 //     exact predicate and the bare exact stage equal the oracle, and the SoS variant equals
 //     the oracle when that is non-zero and is non-zero for pairwise distinct points;
 //   - non-finite input: X and X_sos throw NonFiniteInput, X_filtered is uncertain.
@@ -39,22 +39,6 @@ template <std::size_t N, std::size_t Dim>
     std::fprintf(stderr, ")\n");
   }
   std::abort();
-}
-
-template <std::size_t N, std::size_t Dim>
-bool all_finite(const std::array<std::array<double, Dim>, N>& p) {
-  for (const auto& q : p)
-    for (double v : q)
-      if (!std::isfinite(v)) return false;
-  return true;
-}
-
-template <std::size_t N, std::size_t Dim>
-bool distinct(const std::array<std::array<double, Dim>, N>& p) {
-  for (std::size_t i = 0; i < N; ++i)
-    for (std::size_t j = i + 1; j < N; ++j)
-      if (p[i] == p[j]) return false;
-  return true;
 }
 
 // exact(), exact_stage(), filtered(), sos() on the array form, per predicate.
@@ -97,7 +81,7 @@ struct IS {
 
 template <class T, std::size_t N, std::size_t Dim>
 void check(const std::array<std::array<double, Dim>, N>& p) {
-  if (!all_finite(p)) {
+  if (!fz::all_finite(p)) {
     if (T::filtered(p) != pr::FilteredSign::uncertain) fail(T::name, "filter certified a sign for non-finite input", p);
     bool threw = false;
     try { (void)T::exact(p); } catch (const pr::NonFiniteInput&) { threw = true; }
@@ -114,7 +98,7 @@ void check(const std::array<std::array<double, Dim>, N>& p) {
   if (pr::to_int(T::stage(p)) != o) fail(T::name, "WRONG SIGN: exact stage differs from the oracle", p);
   const int s = pr::to_int(T::sos(p));
   if (o != 0 && s != o) fail(T::name, "sos differs from the non-zero exact sign", p);
-  if (s == 0 && distinct(p)) fail(T::name, "sos is zero for distinct points", p);
+  if (s == 0 && fz::distinct(p)) fail(T::name, "sos is zero for distinct points", p);
 }
 
 }  // namespace

@@ -1,5 +1,5 @@
 // Brute-force, independent checks of a (constrained) Delaunay triangulation for the dt_*
-// tests: every sign from the GMP rational oracle (tests/oracle), areas summed in exact
+// tests: every sign from the GMP rational oracle (fuzz/oracles), areas summed in exact
 // rationals, the convex hull by a monotone chain of its own.
 #pragma once
 

@@ -28,6 +28,9 @@ OPTIONS = {
     "domain": [("-o", "out.poly", False)],
     "check-surface": [],
     "demo": [],
+    "fuzz": [("--seconds", "5", True), ("--cases", "10", True), ("--seed", "1", True),
+             ("--jobs", "1", True), ("--keep-going", None, True), ("--report", "r.json", True),
+             ("--out", ".", True), ("--list", None, False), ("--replay", "x.repro", False)],
 }
 MESH_OUTPUTS = [".mesh", ".msh", ".vtu", ".node", ".ele"]
 CONVERT_OUTPUTS = [".node", ".ele", ".face", ".poly", ".mesh", ".msh", ".vtu"]
@@ -93,9 +96,9 @@ def check_options_parsed(certimesh, tmp):
     for command, options in OPTIONS.items():
         for option, value, _ in options:
             args = [command, option] + ([value] if value is not None else [])
-            if command == "predicates":
+            if command == "predicates" or (command, option) == ("fuzz", "--list"):
                 rc, out, err = run(certimesh, args, tmp)
-                check(rc == 0, "predicates %s: exit %d, %r" % (option, rc, err))
+                check(rc == 0, "%s %s: exit %d, %r" % (command, option, rc, err))
                 continue
             # The required positional argument is missing, so nothing runs; the complaint
             # must be about that, not about the option.

@@ -2,7 +2,7 @@
 // strip whose bottom side is the one input segment (0,0)-(4,0): there every point x·(1,0) with
 // a double x is exact, so the test's own segment functions are exact by construction and
 // independent of the generators' rounding code. Orientation and area are checked with the GMP
-// rational oracle (tests/oracle): sliding, collapsing and inserting on the bottom side leave
+// rational oracle (fuzz/oracles): sliding, collapsing and inserting on the bottom side leave
 // the strip's area exactly unchanged.
 #include <gmpxx.h>
 #include <gtest/gtest.h>

@@ -2,7 +2,7 @@
 // and non-convex flips, a collapse that would invert a triangle, node deletion at 5- and
 // 6-valent vertices, a node shift inside the kernel of a non-convex star, insertion on
 // interior and boundary edges, and the boundary trace. Orientation and area are checked with
-// the GMP rational oracle (tests/oracle), independent of the predicates under test.
+// the GMP rational oracle (fuzz/oracles), independent of the predicates under test.
 #include <gmpxx.h>
 #include <gtest/gtest.h>
 

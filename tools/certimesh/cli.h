@@ -92,6 +92,26 @@ int run_domain(const std::string& script_path, const std::string& output);
 /// (each problem on stderr as `error: SURFACE: ...`), 2 unreadable.
 int run_check_surface(const std::string& path);
 
+struct FuzzOptions {
+  bool list = false;          // --list: the targets, one line each
+  std::string replay;         // --replay FILE: re-run one reproducer
+  std::string target;         // TARGET (certimesh fuzz --list)
+  std::uint64_t cases = 0;    // --cases N; 0: the seconds budget
+  double seconds = 60.0;      // --seconds S (ignored when --cases is given)
+  std::uint64_t seed = 0;     // --seed K: case i draws from splitmix64(K ^ splitmix64(i))
+  unsigned jobs = 1;          // --jobs J: threads
+  bool keep_going = false;    // --keep-going: run the whole budget, every finding written
+  std::string report;         // --report R.json; empty: none
+  std::string out = ".";      // --out DIR: where the reproducers go
+  double progress_interval = 10.0;  // seconds between progress lines on stderr
+};
+
+/// `certimesh fuzz ...` from the command line (argv[1] == "fuzz"). Returns 0 clean, 1 a
+/// finding (its reproducer written) or a replay that still fails, 2 usage error or
+/// unreadable/unwritable file (`error: ...`).
+int parse_and_run_fuzz(int argc, char** argv);
+int run_fuzz(const FuzzOptions& options);
+
 /// `certimesh demo`: the classroom failures of naive floating point, and certimesh's answers.
 int run_demo();
 

@@ -4,6 +4,7 @@
 #include <string>
 #include <string_view>
 
+#include "certimesh/fuzz/campaign/campaign.h"
 #include "cli.h"
 
 namespace certimesh::cli {
@@ -244,7 +245,39 @@ std::string demo_help() {
 
 }  // namespace
 
+std::string fuzz_help() {
+  const FuzzOptions d;
+  return "usage: certimesh fuzz TARGET [--seconds S | --cases N] [--seed K] [--jobs J]\n"
+         "                      [--keep-going] [--report R.json] [--out DIR]\n"
+         "       certimesh fuzz --list\n"
+         "       certimesh fuzz --replay FILE\n"
+         "\n"
+         "Runs TARGET's cases 0, 1, 2, ... against exact oracles that share no code with what\n"
+         "they check; case i draws its input from splitmix64(K ^ splitmix64(i)), so a seed and\n"
+         "a budget of cases give the same cases, and the same first finding, for any --jobs.\n"
+         "Progress and cases/s go to stderr every " + format("%g", d.progress_interval) + " s; the summary to stdout.\n"
+         "\n"
+         "  TARGET               one of `certimesh fuzz --list`\n"
+         "  --seconds S          wall-clock budget (default: " + format("%g", d.seconds) + " s)\n"
+         "  --cases N            a budget of N cases instead of seconds (default: none)\n"
+         "  --seed K             the campaign seed, decimal or 0x hex (default: " + std::to_string(d.seed) + ")\n"
+         "  --jobs J             threads (default: " + std::to_string(d.jobs) + ")\n"
+         "  --keep-going         run the whole budget and write every finding, the lowest " +
+         std::to_string(fuzz::campaign::CampaignOptions{}.max_findings) + "\n"
+         "                       kept (default: stop at the first)\n"
+         "  --report R.json      a JSON record: target, commit, seed, jobs, cases, seconds,\n"
+         "                       cases/s, findings (default: none)\n"
+         "  --out DIR            where reproducers go, as TARGET-seedK-caseI.repro (default: " + d.out + ")\n"
+         "  --list               the targets, with what each checks\n"
+         "  --replay FILE        re-run a reproducer's input, and its case seed through this\n"
+         "                       build's generators\n"
+         "\n"
+         "exit status: 0 no finding (replay: the input passes), 1 a finding, its reproducer\n"
+         "written (replay: the input still fails), 2 usage error or unreadable/unwritable file.\n";
+}
+
 std::string command_help(std::string_view command) {
+  if (command == "fuzz") return fuzz_help();
   if (command == "mesh") return mesh_help();
   if (command == "check") return check_help();
   if (command == "convert") return convert_help();

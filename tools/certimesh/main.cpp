@@ -1,5 +1,5 @@
 // certimesh: the command-line tool. Subcommands: demo, predicates, convert, check, mesh,
-// check-surface, domain. See --help, and COMMAND --help for one command's options (help.cpp).
+// check-surface, domain, fuzz. See --help, and COMMAND --help for one command's options (help.cpp).
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -46,6 +46,10 @@ constexpr const char* kHelp =
     "  domain SCRIPT -o OUT.poly\n"
     "                       constructive geometry: rectangles, discs and polygons combined\n"
     "                       by union, difference, intersection (docs/domains.md)\n"
+    "  fuzz TARGET [--seconds S | --cases N] [--seed K] [--jobs J] [--keep-going]\n"
+    "       [--report R.json] [--out DIR] | --list | --replay FILE\n"
+    "                       a fuzzing campaign against exact oracles: cases/s and progress,\n"
+    "                       a reproducer file per finding (fuzz/README.md)\n"
     "  --help, -h           this text; COMMAND --help: that command's options and defaults\n"
     "  --version            the version\n"
     "\n"
@@ -71,7 +75,8 @@ constexpr const char* kHelp =
     "disagreement, check found the mesh invalid, mesh found the domain invalid, or\n"
     "check-surface found the surface invalid; 2 usage\n"
     "error or unreadable input; 3 internal error (a generated mesh failed its certificate);\n"
-    "4 mesh written but --min-angle not met (counted on standard error).\n";
+    "4 mesh written but --min-angle not met (counted on standard error).\n"
+    "fuzz: 0 no finding, 1 a finding (reproducer written), 2 usage error.\n";
 
 int usage_error(const char* fmt, const char* arg) {
   std::fputs("error: ", stderr);
@@ -240,6 +245,7 @@ int main(int argc, char** argv) {
     return certimesh::cli::run_check(options);
   }
   if (command == "mesh") return parse_and_run_mesh(argc, argv);
+  if (command == "fuzz") return certimesh::cli::parse_and_run_fuzz(argc, argv);
   if (command == "check-surface") {
     if (argc != 3 || std::string_view(argv[2]).starts_with("-")) return usage_error("check-surface takes one SURFACE file%s", "");
     return certimesh::cli::run_check_surface(argv[2]);

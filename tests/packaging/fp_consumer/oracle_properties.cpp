@@ -1,6 +1,6 @@
 // The consumer's oracle properties: adversarial near-degenerate orient2d, orient3d,
 // incircle and insphere queries through kernel_calls.cpp (compiled with the consumer's
-// flags), checked against the suite's GMP rational oracle (tests/oracle), which shares no
+// flags), checked against the suite's GMP rational oracle (fuzz/oracles), which shares no
 // code with the kernel. For every query: the exact sign equals the oracle's, and the
 // filtered sign is uncertain or equal to it (O2.6, O3.6, IC.6, IS.6).
 // usage: fp_oracle_properties [queries per predicate]

@@ -78,6 +78,24 @@ struct Config {
   const char* family = "bit-pattern";
 };
 
+/// True when every coordinate is finite (no NaN, no infinity).
+template <std::size_t N, std::size_t Dim>
+bool all_finite(const std::array<std::array<double, Dim>, N>& p) {
+  for (const auto& q : p)
+    for (double v : q)
+      if (!std::isfinite(v)) return false;
+  return true;
+}
+
+/// True when no two points are equal (coordinate-wise ==, so -0.0 equals 0.0).
+template <std::size_t N, std::size_t Dim>
+bool distinct(const std::array<std::array<double, Dim>, N>& p) {
+  for (std::size_t i = 0; i < N; ++i)
+    for (std::size_t j = i + 1; j < N; ++j)
+      if (p[i] == p[j]) return false;
+  return true;
+}
+
 using Orient2dInput = Config<3, 2>;
 using Orient3dInput = Config<4, 3>;
 using IncircleInput = Config<4, 2>;

@@ -1,0 +1,14 @@
+#include "certimesh/fuzz/campaign/intersection_target.h"
+#include "certimesh/fuzz/campaign/predicates_target.h"
+#include "certimesh/fuzz/campaign/target.h"
+
+namespace certimesh::fuzz::campaign {
+
+TargetRegistry builtin_targets() {
+  TargetRegistry r;
+  r.add(make_predicates_target());
+  r.add(make_intersection_target());
+  return r;
+}
+
+}  // namespace certimesh::fuzz::campaign
