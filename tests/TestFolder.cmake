@@ -53,7 +53,7 @@ function(certimesh_test_folder part)
     add_executable(${target} ${source})
     target_link_libraries(${target} PRIVATE certimesh::${part} certimesh::io certimesh::predicates
                           certimesh_test_oracle certimesh_fuzz_generators rapidcheck_gtest
-                          GTest::gtest_main)
+                          certimesh_test_main)
     target_include_directories(${target} PRIVATE ${CMAKE_CURRENT_SOURCE_DIR})
     target_compile_definitions(${target} PRIVATE
       CERTIMESH_TEST_DATA_DIR="${CMAKE_CURRENT_SOURCE_DIR}"
