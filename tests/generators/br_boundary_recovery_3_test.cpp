@@ -424,11 +424,14 @@ TEST(br_Regions, TwoRegionPointsLabelTheTwoSidesOfAnInterface) {
 }
 
 TEST(br_Regions, PointsTheRegionsCannotTakeAreRefused) {
-  const P3 outside{9, 9, 9}, on_face{1, 2, 2}, in_hole{2, 2, 2}, inside{0.5, 0.5, 0.5};
+  const P3 outside{9, 9, 9}, on_face{1, 2, 2}, on_vertex{1, 1, 1}, in_hole{2, 2, 2}, inside{0.5, 0.5, 0.5};
   const double half = 0.5, one = 1;
   EXPECT_THROW({ NestedBoxes b; generators::apply_holes_and_regions_3(b.solid, b.surface.triangles, {&outside, 1}, {}, {}); },
                generators::SolidRegionsError);
   EXPECT_THROW({ NestedBoxes b; generators::apply_holes_and_regions_3(b.solid, b.surface.triangles, {&on_face, 1}, {}, {}); },
+               generators::SolidRegionsError);
+  // On a surface vertex: refused whichever tetrahedron round it is met first.
+  EXPECT_THROW({ NestedBoxes b; generators::apply_holes_and_regions_3(b.solid, b.surface.triangles, {&on_vertex, 1}, {}, {}); },
                generators::SolidRegionsError);
   EXPECT_THROW({ NestedBoxes b; generators::apply_holes_and_regions_3(b.solid, b.surface.triangles, {&in_hole, 1}, {&in_hole, 1}, {&one, 1}); },
                generators::SolidRegionsError);

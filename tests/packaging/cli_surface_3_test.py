@@ -252,7 +252,8 @@ def main():
                 failures.append("cavity_by_hole.smesh: the mesh fails check --domain")
         # Points the regions cannot take: refused by name, exit 2, nothing written.
         for name, holes, regions, says in (("hole_outside", [(9, 9, 9)], [], "outside the solid"),
-                                           ("hole_on_surface", [(1, 2, 2)], [], "lies on a surface triangle"),
+                                           ("hole_on_surface", [(1, 2, 2)], [], "lies on the surface"),
+                                           ("hole_on_surface_vertex", [(1, 1, 1)], [(0.5, 0.5, 0.5, 7)], "lies on the surface"),
                                            ("every_region_a_hole", [(2, 2, 2), (0.5, 0.5, 0.5)], [], "the solid is empty")):
             smesh, out = os.path.join(tmp, name + ".smesh"), os.path.join(tmp, name + ".mesh")
             write_nested_smesh(smesh, holes, regions)

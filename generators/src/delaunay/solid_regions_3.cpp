@@ -62,30 +62,31 @@ class Regions {
       }
   }
 
-  /// A tetrahedron whose closed set holds p, or none; throws when p lies on a surface triangle.
+  /// A tetrahedron whose closed set holds p, or none; throws when p lies on a closed surface
+  /// triangle (on a surface vertex or edge too: every tetrahedron holding p is looked at, so
+  /// the answer does not depend on which one is found first).
   std::uint32_t locate(const Point3& p, const std::string& what) const {
+    std::uint32_t found = none;
     for (std::uint32_t t = 0; t < solid_.tetrahedra.size(); ++t) {
-      const auto& c = solid_.tetrahedra[t];
       if (!in_box(t, p)) continue;
-      int zero_face = -1;
-      bool inside = true;
+      const auto& c = solid_.tetrahedra[t];
+      bool inside = true, on_surface = false;
       for (int i = 0; i < 4 && inside; ++i) {
-        const Face f = face_of(c, i);  // (b, c, d) for i = 0 ...: orient the face towards corner i
+        const Face f = face_of(c, i);  // p must be on corner i's side of it, or on it
         const predicates::Sign to_corner = predicates::orient3d(point(f[0]), point(f[1]), point(f[2]), point(c[static_cast<std::size_t>(i)]));
         const predicates::Sign to_p = predicates::orient3d(point(f[0]), point(f[1]), point(f[2]), p);
-        if (to_p == predicates::Sign::zero) {
-          if (surface_.count(sorted(f))) zero_face = i;
-        } else if (to_p != to_corner) {
+        if (to_p == predicates::Sign::zero)
+          on_surface = on_surface || surface_.count(sorted(f)) > 0;
+        else if (to_p != to_corner)
           inside = false;
-        }
       }
       if (!inside) continue;
-      if (zero_face >= 0)
+      if (on_surface)
         throw SolidRegionsError("error: " + what + " " + format_point(p) +
-                                " lies on a surface triangle: neither side is its region");
-      return t;
+                                " lies on the surface (a triangle, edge or vertex of it): neither side is its region");
+      if (found == none) found = t;
     }
-    return none;
+    return found;
   }
 
   /// The tetrahedra of the region of t, in fill order.

@@ -19,7 +19,7 @@
 
 namespace certimesh::generators {
 
-/// A hole or region point the regions cannot take: on a surface triangle (no side is its
+/// A hole or region point the regions cannot take: on the surface (no side is its
 /// region), in no tetrahedron (outside the solid, or in a hole already removed), or a region
 /// attribute that is not an integer label; or hole points that remove the whole solid. The
 /// message names the point and says which.
