@@ -49,9 +49,11 @@ stamp "stage 2: $asan/ (ASan + UBSan)"
 # The CGAL oracle tests are left out here: they are the slowest files to compile (a quarter
 # of this stage's build) and compare with CGAL what stage 1 compared; the code they call runs
 # under the sanitizers in the other tests.
+# The libraries build as unity translation units here (CERTIMESH_UNITY_LIBRARIES; stage 1
+# keeps the per-file build a developer has).
 cmake -S . -B "$asan" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCERTIMESH_SANITIZE=ON \
       -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -g1 -DNDEBUG" -DCERTIMESH_BUILD_BENCHMARKS=OFF \
-      -DCERTIMESH_CGAL_ORACLE_TESTS=OFF "${speed[@]}"
+      -DCERTIMESH_CGAL_ORACLE_TESTS=OFF -DCERTIMESH_UNITY_LIBRARIES=ON "${speed[@]}"
 cmake --build "$asan" -j"$jobs"
 export ASAN_OPTIONS=${ASAN_OPTIONS:-detect_stack_use_after_return=1:strict_string_checks=1:hard_rss_limit_mb=$memory_mb}
 export UBSAN_OPTIONS=${UBSAN_OPTIONS:-print_stacktrace=1:halt_on_error=1}

@@ -25,9 +25,9 @@ namespace {
 
 using predicates::Sign;
 
-struct UnionFind {
+struct FacetUnionFind {
   std::vector<std::size_t> parent;
-  explicit UnionFind(std::size_t n) : parent(n) { std::iota(parent.begin(), parent.end(), std::size_t{0}); }
+  explicit FacetUnionFind(std::size_t n) : parent(n) { std::iota(parent.begin(), parent.end(), std::size_t{0}); }
   std::size_t find(std::size_t x) {
     while (parent[x] != x) x = parent[x] = parent[parent[x]];
     return x;
@@ -46,7 +46,7 @@ Finding pinch(const FacetSet& b, std::size_t f, Index v, const std::string& why)
 // Two boundary facets that leave a vertex (2D) or an edge (3D) in the same direction overlap:
 // the first such pair, reported by the embedding's own exact rules once no vertex or edge is
 // non-manifold (non_manifold_boundary comes first in defect.h).
-struct Overlap {
+struct FirstOverlappingPair {
   std::size_t a = SIZE_MAX, b = SIZE_MAX;
   void note(std::size_t x, std::size_t y) {
     if (a == SIZE_MAX) a = x, b = y;
@@ -91,8 +91,8 @@ bool leaves(const FacetSet& b, std::size_t f, Index v) { return b.facet(f)[0] ==
 
 // One vertex with more than two boundary edges: sorted counterclockwise in place, checked to
 // alternate, each entering edge united with the edge after it.
-Finding pair_at_pinch_2d(const MeshView& m, const FacetSet& b, Index v, std::size_t* first, std::size_t n, UnionFind& uf,
-                         Overlap& overlap) {
+Finding pair_at_pinch_2d(const MeshView& m, const FacetSet& b, Index v, std::size_t* first, std::size_t n, FacetUnionFind& uf,
+                         FirstOverlappingPair& overlap) {
   const CcwAround ccw{&m, &b, v};
   // Sorted as keys that carry their half and far end: CcwAround reads the facet, then both
   // ends, then the coordinates for every comparison (most of this stage on a pinwheel).
@@ -125,7 +125,7 @@ Finding pair_at_pinch_2d(const MeshView& m, const FacetSet& b, Index v, std::siz
 }
 
 // 2D: as many boundary edges enter every boundary vertex as leave it; pairs as above.
-Finding loops_2d(const MeshView& m, const FacetSet& b, UnionFind& uf, Stars& stars, Overlap& overlap) {
+Finding loops_2d(const MeshView& m, const FacetSet& b, FacetUnionFind& uf, Stars& stars, FirstOverlappingPair& overlap) {
   stars = stars_2d(m, b);
   for (Index v = 0; v < m.vertex_count; ++v) {
     std::size_t* first = stars.facets.data() + stars.start[v];
@@ -188,8 +188,8 @@ struct AroundEdge {
 
 // One edge in more than two boundary triangles: sorted around it, checked to alternate, and
 // each triangle that gives the edge the direction a -> b paired with the next one.
-Finding pair_around_edge(const MeshView& m, const FacetSet& b, DirectedEdge* first, std::size_t n, UnionFind& uf,
-                         Overlap& overlap) {
+Finding pair_around_edge(const MeshView& m, const FacetSet& b, DirectedEdge* first, std::size_t n, FacetUnionFind& uf,
+                         FirstOverlappingPair& overlap) {
   const Index lo = first[0].lo, hi = first[0].hi;
   const AroundEdge around{&m, lo, hi, apex_of(b, first[0].facet, lo, hi)};
   auto apex = [&](const DirectedEdge& e) { return apex_of(b, e.facet, lo, hi); };
@@ -214,7 +214,7 @@ Finding pair_around_edge(const MeshView& m, const FacetSet& b, DirectedEdge* fir
 
 // 3D, edges: every boundary edge in an even number of boundary triangles, as many giving it
 // each direction; two of them oriented oppositely, more paired around the edge.
-Finding edges_3d(const MeshView& m, const FacetSet& b, UnionFind& uf, Overlap& overlap) {
+Finding edges_3d(const MeshView& m, const FacetSet& b, FacetUnionFind& uf, FirstOverlappingPair& overlap) {
   std::vector<DirectedEdge> edges;
   edges.reserve(3 * b.size());
   for (std::size_t f = 0; f < b.size(); ++f)
@@ -245,7 +245,7 @@ Finding edges_3d(const MeshView& m, const FacetSet& b, UnionFind& uf, Overlap& o
 }
 
 // The components: facets, bounding box, enclosed sign.
-void collect_components(const MeshView& m, const FacetSet& b, UnionFind& uf, Components& comps) {
+void collect_components(const MeshView& m, const FacetSet& b, FacetUnionFind& uf, Components& comps) {
   std::vector<std::size_t> id(b.size(), SIZE_MAX);  // components numbered by first facet
   for (std::size_t i = 0; i < b.size(); ++i) {
     const std::size_t root = uf.find(i), c = id[root] == SIZE_MAX ? (id[root] = comps.facets.size()) : id[root];
@@ -320,8 +320,8 @@ Finding free_vertices_3d(const MeshView& m, const FacetSet& b, Components& comps
 }  // namespace
 
 Finding check_boundary_manifold(const MeshView& m, const FacetSet& b, Components& comps) {
-  UnionFind uf(b.size());
-  Overlap overlap;
+  FacetUnionFind uf(b.size());
+  FirstOverlappingPair overlap;
   Stars stars;
   Finding f = m.dim == 2 ? loops_2d(m, b, uf, stars, overlap) : edges_3d(m, b, uf, overlap);
   if (f.defect != Defect::none) return f;

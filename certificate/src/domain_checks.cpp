@@ -28,7 +28,7 @@
 namespace certimesh::certificate::detail {
 namespace {
 
-using Edge = std::pair<Index, Index>;
+using IndexEdge = std::pair<Index, Index>;
 
 struct Domain {
   MeshView geo;     // coordinates only
@@ -109,7 +109,7 @@ Finding load_domain(const io::MeshData& data, int dim, Domain& d) {
   }
   // 3D: closed shells, every edge in an even number of triangles (two; more where shells touch
   // along an edge: design decision 8); oriented when every edge is used as often each way.
-  std::vector<std::pair<Edge, bool>> edges;
+  std::vector<std::pair<IndexEdge, bool>> edges;
   for (std::size_t f = 0; dim == 3 && f < d.facets.size(); ++f)
     for (int i = 0; i < 3; ++i) {
       const Index u = d.facets.facet(f)[i], w = d.facets.facet(f)[(i + 1) % 3];
@@ -516,12 +516,12 @@ Finding interfaces_inside_solid(const MeshView& m, const Domain& d, const std::v
 // The domain edges whose mesh-edge chains face f needs, and which of them bound it: a segment;
 // a triangle's three edges; a polygonal facet's every polygon edge, of which those in an odd
 // number of its polygons bound its region (the others are inside it, covered from both sides).
-void face_edges(const Domain& d, std::size_t f, std::vector<Edge>& walked, std::vector<char>& bounding) {
+void face_edges(const Domain& d, std::size_t f, std::vector<IndexEdge>& walked, std::vector<char>& bounding) {
   walked.clear();
   bounding.clear();
   if (d.polygonal) {
     walked = d.polygons.edges[f];
-    for (const Edge& e : walked) bounding.push_back(std::binary_search(d.polygons.boundary[f].begin(), d.polygons.boundary[f].end(), e));
+    for (const IndexEdge& e : walked) bounding.push_back(std::binary_search(d.polygons.boundary[f].begin(), d.polygons.boundary[f].end(), e));
     return;
   }
   const Index* x = d.facets.facet(f);
@@ -556,7 +556,7 @@ Finding coverage(const MeshView& m, const FacetSet& b, const Domain& d, const On
   std::vector<std::uint32_t> seen(m.vertex_count, 0);
   std::uint32_t stamp = 0;
   std::vector<SegmentChain> chains;
-  std::vector<Edge> walked;
+  std::vector<IndexEdge> walked;
   std::vector<char> bounding;
   for (std::size_t f = 0; f < d.face_count(); ++f) {
     // A TetGen facet no mesh face lies on is allowed when the domain's hole points make both
@@ -565,7 +565,7 @@ Finding coverage(const MeshView& m, const FacetSet& b, const Domain& d, const On
       continue;
     const bool optional = !d.needs_cover.empty() && !d.needs_cover[f];  // 2D, eaten: covered or not at all
     face_edges(d, f, walked, bounding);
-    std::vector<Edge> chain, edges_on_face, odd;
+    std::vector<IndexEdge> chain, edges_on_face, odd;
     std::vector<Index> path;
     bool complete = true;
     for (std::size_t i = 0; i < walked.size() && complete; ++i) {

@@ -19,9 +19,9 @@ using predicates::Sign;
 bool lower(const Point2& a, const Point2& b) { return sweep_less(a, b); }  // the sweep's order
 
 // Union-find over 0..n-1 (Boost's disjoint sets, path compression and union by rank).
-class UnionFind {
+class IndexUnionFind {
  public:
-  explicit UnionFind(std::size_t n) : sets_(n) {
+  explicit IndexUnionFind(std::size_t n) : sets_(n) {
     for (std::size_t i = 0; i < n; ++i) sets_.make_set(i);
   }
   std::size_t find(std::size_t x) { return sets_.find_set(x); }
@@ -87,7 +87,7 @@ Finding domain_faces_2d(const MeshView& geo, const FacetSet& segments, const std
     ++cycles;
   }
   // Connected components and their lowest vertex; isolated vertices are components too.
-  UnionFind vertices(geo.vertex_count);
+  IndexUnionFind vertices(geo.vertex_count);
   for (std::size_t f = 0; f < segments.size(); ++f) vertices.unite(segments.facet(f)[0], segments.facet(f)[1]);
   std::vector<Index> lowest(geo.vertex_count, static_cast<Index>(-1));
   for (Index v = 0; v < geo.vertex_count; ++v) {
@@ -116,7 +116,7 @@ Finding domain_faces_2d(const MeshView& geo, const FacetSet& segments, const std
     const bool first_is_lower = lower(geo.p2(segments.facet(f)[0]), geo.p2(segments.facet(f)[1]));
     return cycle[2 * f + (first_is_lower ? 1 : 0)];
   };
-  UnionFind faces(cycles + 1);
+  IndexUnionFind faces(cycles + 1);
   std::vector<std::size_t> isolated_face(geo.vertex_count, SIZE_MAX);
   for (std::size_t q = 0; q < component_queries; ++q) {
     const Index v = query_vertex[q];

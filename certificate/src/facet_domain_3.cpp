@@ -17,7 +17,7 @@
 namespace certimesh::certificate::detail {
 namespace {
 
-using Edge = PolygonalFacets::Edge;
+using FacetEdge = PolygonalFacets::Edge;
 using predicates::Point2;
 using predicates::Sign;
 
@@ -306,22 +306,22 @@ Finding cut_facet(const io::MeshData& d, std::size_t f, PolygonalFacets& out) {
     if (!clip_ears(p, poly, triangles))
       return invalid_facet(f, "could not be cut into triangles (are its polygons simple, and do they cross?)");
   }
-  std::vector<Edge> edges;
+  std::vector<FacetEdge> edges;
   for (const auto& loop : p.loops)
     for (std::size_t k = 0; k < loop.size(); ++k) edges.push_back(std::minmax(p.id[std::size_t(loop[k])], p.id[std::size_t(loop[(k + 1) % loop.size()])]));
   std::sort(edges.begin(), edges.end());
-  std::vector<Edge> boundary;
+  std::vector<FacetEdge> boundary;
   for (std::size_t i = 0, j = 0; i < edges.size(); i = j) {
     while (j < edges.size() && edges[j] == edges[i]) ++j;
     if ((j - i) % 2 == 1) boundary.push_back(edges[i]);
   }
   edges.erase(std::unique(edges.begin(), edges.end()), edges.end());
   // The cut is checked, not trusted: its triangles' mod-2 boundary must be the region's.
-  std::vector<Edge> cut;
+  std::vector<FacetEdge> cut;
   for (const auto& t : triangles)
     for (int k = 0; k < 3; ++k) cut.push_back(std::minmax(p.id[std::size_t(t[std::size_t(k)])], p.id[std::size_t(t[std::size_t((k + 1) % 3)])]));
   std::sort(cut.begin(), cut.end());
-  std::vector<Edge> odd;
+  std::vector<FacetEdge> odd;
   for (std::size_t i = 0, j = 0; i < cut.size(); i = j) {
     while (j < cut.size() && cut[j] == cut[i]) ++j;
     if ((j - i) % 2 == 1) odd.push_back(cut[i]);

@@ -22,14 +22,14 @@ namespace {
 constexpr int kEdge[3][2] = {{1, 2}, {2, 0}, {0, 1}};
 constexpr int kFace[4][3] = {{1, 2, 3}, {0, 3, 2}, {0, 1, 3}, {0, 2, 1}};
 
-struct Key {
+struct FacetPairingKey {
   Index v[3];   // sorted facet vertices (v[2] unused in 2D)
   int parity;   // 0: oriented facet is an even permutation of v, 1: odd
 };
 
-Key facet_key(const MeshView& m, std::size_t e, int i) {
+FacetPairingKey facet_key(const MeshView& m, std::size_t e, int i) {
   const Index* c = m.cell(e);
-  Key k{};
+  FacetPairingKey k{};
   const int n = m.dim;
   for (int j = 0; j < n; ++j) k.v[j] = c[n == 2 ? kEdge[i][j] : kFace[i][j]];
   for (int a = 0; a < n; ++a)
@@ -132,7 +132,7 @@ Finding pair_facets(const MeshView& m, FacetSet& boundary, std::size_t& interior
   std::vector<std::size_t> next(start.begin(), start.end() - 1);
   for (std::size_t e = 0; e < m.element_count; ++e)
     for (int i = 0; i < k; ++i) {
-      const Key key = facet_key(m, e, i);
+      const FacetPairingKey key = facet_key(m, e, i);
       records[next[key.v[0]]++] = Record{key.v[1], m.dim == 3 ? key.v[2] : 0,
                                          static_cast<std::uint32_t>(e << 3 | static_cast<std::size_t>(i) << 1 |
                                                                     static_cast<std::size_t>(key.parity))};

@@ -29,7 +29,7 @@ struct Span {  // a non-horizontal segment, lower end first
 
 // +1 when p is left of f (f directed upward), -1 right, 0 on its line; f's own ends are 0
 // without the predicate.
-Sign side(const Span& f, const Point2& p) {
+Sign span_side(const Span& f, const Point2& p) {
   if (p == f.lo || p == f.hi) return Sign::zero;
   return predicates::orient2d(f.lo, f.hi, p);
 }
@@ -41,16 +41,16 @@ struct LeftToRight {
     const bool e_later = !sweep_less(e.lo, f.lo);  // decide at the later lower end
     const Span& later = e_later ? e : f;
     const Span& other = e_later ? f : e;
-    Sign s = side(other, later.lo);
-    if (s == Sign::zero) s = side(other, later.hi);  // the same lower end: the upper ends decide
+    Sign s = span_side(other, later.lo);
+    if (s == Sign::zero) s = span_side(other, later.hi);  // the same lower end: the upper ends decide
     if (s == Sign::zero) return e.id < f.id;         // collinear overlap: not in a valid domain
     return (s == Sign::positive) == e_later;
   }
-  bool operator()(const Span& f, const Point2& p) const { return side(f, p) == Sign::negative; }
-  bool operator()(const Point2& p, const Span& f) const { return side(f, p) != Sign::negative; }
+  bool operator()(const Span& f, const Point2& p) const { return span_side(f, p) == Sign::negative; }
+  bool operator()(const Point2& p, const Span& f) const { return span_side(f, p) != Sign::negative; }
 };
 
-using Status = std::set<Span, LeftToRight>;
+using SpanStatus = std::set<Span, LeftToRight>;
 
 double toward(double x, double direction) {
   const double y = next_double(x, direction > 0 ? 1 : -1);
@@ -59,7 +59,7 @@ double toward(double x, double direction) {
 
 // Whether f's line lies strictly on side `want` of both points (f spans their heights).
 bool strictly_beyond(const Span& f, const Point2& c1, const Point2& c2, Sign want) {
-  return side(f, c1) == want && side(f, c2) == want;
+  return span_side(f, c1) == want && span_side(f, c2) == want;
 }
 
 class NearSweep {
@@ -92,10 +92,10 @@ class NearSweep {
       return a.y != b.y ? a.y < b.y : (a.kind != b.kind ? a.kind < b.kind : a.index < b.index);
     });
     out_.clear();
-    std::vector<Status::iterator> where(spans_.size(), status_.end());
+    std::vector<SpanStatus::iterator> where(spans_.size(), status_.end());
     // A point's two searches start from the same place when no segment ends or starts at its
     // height (the common case: a Steiner point between a segment's ends): one tree search.
-    std::vector<Status::iterator> found(points_.size(), status_.end());
+    std::vector<SpanStatus::iterator> found(points_.size(), status_.end());
     std::vector<std::uint64_t> found_at(points_.size(), 0);
     std::uint64_t changes = 1;  // status modifications so far; 0 marks "not searched"
     for (const Event& e : events) {
@@ -103,7 +103,7 @@ class NearSweep {
       else if (e.kind == remove) status_.erase(where[e.index]), ++changes;
       else {
         const bool same = e.kind == search_upper && found_at[e.index] == changes;
-        const Status::iterator first = same ? found[e.index] : status_.lower_bound(points_[e.index]);
+        const SpanStatus::iterator first = same ? found[e.index] : status_.lower_bound(points_[e.index]);
         found[e.index] = first, found_at[e.index] = changes;
         search(e.index, e.kind == search_upper, first);
       }
@@ -124,7 +124,7 @@ class NearSweep {
   // Walks out from p in the status over the half-band [y0, y1] (p.y is one end), collecting
   // segments until one lies strictly beyond p's box of neighbouring doubles across it.
   // `first`: the first segment with p left of or on it (status_.lower_bound(p)).
-  void search(std::uint32_t q, bool upper, Status::iterator first) {
+  void search(std::uint32_t q, bool upper, SpanStatus::iterator first) {
     const Point2 p = points_[q];
     const double inf = std::numeric_limits<double>::infinity();
     const double y0 = upper ? p.y : toward(p.y, -inf), y1 = upper ? toward(p.y, inf) : p.y;
@@ -155,7 +155,7 @@ class NearSweep {
   const std::vector<Point2>& points_;
   std::vector<Span> spans_;
   std::vector<Horizontal> horizontals_;
-  Status status_;
+  SpanStatus status_;
   std::vector<std::pair<std::uint32_t, std::uint32_t>> out_;  // (point, segment)
 };
 

@@ -46,7 +46,7 @@ struct Segment {
   int weight;     // leftward-ray crossing sign of the oriented segment
 };
 
-struct Key {  // the segment itself, not only its index: a comparison touches no other memory
+struct SweepKey {  // the segment itself, not only its index: a comparison touches no other memory
   std::uint32_t segment;
   int weight;
   Segment s;
@@ -64,14 +64,14 @@ struct Context {
 // +1 left, -1 right, 0 on f's line (the point is then on f, f spanning the sweep there).
 // An end of f itself is decided without the predicate (its filter cannot certify a zero, so the
 // exact stage would run): the common case at shared endpoints.
-[[gnu::always_inline]] inline Sign side(const Segment& f, const Point2& p) {  // in the tree's comparisons: keep it inlined
+[[gnu::always_inline]] inline Sign sweep_side(const Segment& f, const Point2& p) {  // in the tree's comparisons: keep it inlined
   if (p == f.lo || p == f.hi) return Sign::zero;
   return predicates::orient2d(f.lo, f.hi, p);
 }
 
 struct LeftOf {
   Context* context = nullptr;
-  bool operator()(const Key& a, const Key& b) const {
+  bool operator()(const SweepKey& a, const SweepKey& b) const {
     if (a.segment == b.segment) return false;
     if (a.segment == UINT32_MAX) return point_left_of(b);
     if (b.segment == UINT32_MAX) return !point_left_of(a);
@@ -82,17 +82,17 @@ struct LeftOf {
     const Segment& later = e_later ? e : f;
     const Segment& other = e_later ? f : e;
     const bool same_start = later.lo == other.lo;
-    Sign s = side(other, later.lo);
+    Sign s = sweep_side(other, later.lo);
     if (s == Sign::zero) {
       if (!same_start) note(a.segment, b.segment);  // a lower end inside the other
-      s = side(other, later.hi);
+      s = sweep_side(other, later.hi);
       if (s == Sign::zero) note(a.segment, b.segment), s = a.segment < b.segment ? Sign::positive : Sign::negative;
     }
     return (s == Sign::positive) == e_later;  // the later one is left of the other
   }
-  bool point_left_of(const Key& k) const {
+  bool point_left_of(const SweepKey& k) const {
     const Segment& f = k.s;
-    const Sign s = side(f, context->point);
+    const Sign s = sweep_side(f, context->point);
     return s != Sign::negative;  // on f: at its lower end (or inside it), a point just left of it
   }
   void note(std::uint32_t a, std::uint32_t b) const {
@@ -100,7 +100,7 @@ struct LeftOf {
   }
 };
 
-using Status = __gnu_pbds::tree<Key, __gnu_pbds::null_type, LeftOf, __gnu_pbds::rb_tree_tag, __gnu_pbds::null_node_update>;
+using SweepStatus = __gnu_pbds::tree<SweepKey, __gnu_pbds::null_type, LeftOf, __gnu_pbds::rb_tree_tag, __gnu_pbds::null_node_update>;
 
 class Sweep {
  public:
@@ -215,14 +215,14 @@ class Sweep {
     return ev;
   }
 
-  void test(Status::iterator a, Status::iterator b) {
+  void test(SweepStatus::iterator a, SweepStatus::iterator b) {
     if (a == status_.end() || b == status_.end() || found_a_ >= 0) return;
     if (contact_of(m_, set_, a->segment, b->segment, Defect::t_junction, Defect::boundary_intersection, "").defect != Defect::none)
       found_a_ = a->segment, found_b_ = b->segment;
   }
-  Status::iterator before(Status::iterator it) { return it == status_.begin() ? status_.end() : std::prev(it); }
+  SweepStatus::iterator before(SweepStatus::iterator it) { return it == status_.begin() ? status_.end() : std::prev(it); }
   void enter(std::uint32_t f) {
-    const auto it = status_.insert(Key{f, segments_[f].weight, segments_[f]}).first;
+    const auto it = status_.insert(SweepKey{f, segments_[f].weight, segments_[f]}).first;
     where_[f] = it;
     fresh_[f] = 1;
     entered_.push_back(f);
@@ -236,7 +236,7 @@ class Sweep {
   void record_entered() {
     for (std::uint32_t f : entered_) {
       if (!fresh_[f]) continue;
-      Status::iterator it = where_[f];
+      SweepStatus::iterator it = where_[f];
       while (it != status_.begin() && fresh_[std::prev(it)->segment]) --it;  // the run's first
       int sum = it == status_.begin() ? 0 : right_of_[std::prev(it)->segment];
       for (; it != status_.end() && fresh_[it->segment]; ++it) {
@@ -260,8 +260,8 @@ class Sweep {
   bool pass_through(const Span& ending, const Span& starting) {
     if (ending.end() - ending.begin() != 1 || starting.end() - starting.begin() != 1) return false;
     const std::uint32_t e = *ending.begin(), f = *starting.begin();
-    const Status::iterator it = where_[e];
-    Key& key = const_cast<Key&>(*it);  // the node's own (non-const) value; the order is kept, as argued
+    const SweepStatus::iterator it = where_[e];
+    SweepKey& key = const_cast<SweepKey&>(*it);  // the node's own (non-const) value; the order is kept, as argued
     key.segment = f;
     key.weight = segments_[f].weight;
     key.s = segments_[f];
@@ -273,8 +273,8 @@ class Sweep {
     return true;
   }
   void leave(std::uint32_t f) {
-    const Status::iterator it = where_[f];
-    const Status::iterator left = before(it), right = std::next(it);
+    const SweepStatus::iterator it = where_[f];
+    const SweepStatus::iterator left = before(it), right = std::next(it);
     status_.erase(it);
     test(left, right);
   }
@@ -284,13 +284,13 @@ class Sweep {
   SweepAnswer answer(const Point2& q) {
     context_.point = q;
     SweepAnswer out;
-    Status::iterator it = status_.lower_bound(Key{UINT32_MAX, 0, {}});
+    SweepStatus::iterator it = status_.lower_bound(SweepKey{UINT32_MAX, 0, {}});
     if (it != status_.begin()) {
-      const Key& left = *std::prev(it);
+      const SweepKey& left = *std::prev(it);
       out.left_facet = left.segment;
       out.winding = right_of_[left.segment];
     }
-    for (; it != status_.end() && side(it->s, q) == Sign::zero; ++it)
+    for (; it != status_.end() && sweep_side(it->s, q) == Sign::zero; ++it)
       if (!(it->s.lo == q)) out.on_facet = true;
     return out;
   }
@@ -300,8 +300,8 @@ class Sweep {
   const std::vector<Index>* vertex_order_;  // every vertex in sweep order, or null
   std::vector<Segment> segments_;
   Context context_;
-  Status status_;
-  std::vector<Status::iterator> where_;
+  SweepStatus status_;
+  std::vector<SweepStatus::iterator> where_;
   std::vector<int> right_of_;                // per segment in the status: the prefix sum up to it
   std::vector<char> fresh_;                  // entered at the current point, not yet recorded
   std::vector<std::uint32_t> entered_;       // the segments that entered at the current point

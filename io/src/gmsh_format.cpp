@@ -31,16 +31,16 @@ struct CellKind {
 };
 constexpr std::array<CellKind, 3> kKinds{{{1, 1, 2}, {2, 2, 3}, {3, 4, 4}}};
 
-const std::vector<Index>& cells_of(const MeshData& mesh, std::size_t kind) {
+const std::vector<Index>& cells_of_gmsh_kind(const MeshData& mesh, std::size_t kind) {
   return kind == 0 ? mesh.segments : kind == 1 ? mesh.triangles : mesh.tetrahedra;
 }
-const std::vector<Label>& labels_of(const MeshData& mesh, std::size_t kind) {
+const std::vector<Label>& labels_of_gmsh_kind(const MeshData& mesh, std::size_t kind) {
   return kind == 0 ? mesh.segment_labels : kind == 1 ? mesh.triangle_labels : mesh.tetrahedron_labels;
 }
-std::vector<Index>& cells_of(MeshData& mesh, std::size_t kind) {
+std::vector<Index>& cells_of_gmsh_kind(MeshData& mesh, std::size_t kind) {
   return kind == 0 ? mesh.segments : kind == 1 ? mesh.triangles : mesh.tetrahedra;
 }
-std::vector<Label>& labels_of(MeshData& mesh, std::size_t kind) {
+std::vector<Label>& labels_of_gmsh_kind(MeshData& mesh, std::size_t kind) {
   return kind == 0 ? mesh.segment_labels : kind == 1 ? mesh.triangle_labels : mesh.tetrahedron_labels;
 }
 
@@ -63,8 +63,8 @@ struct Entity {
 std::vector<Entity> group_into_entities(const MeshData& mesh) {
   std::vector<Entity> entities;
   for (std::size_t kind = 0; kind < kKinds.size(); ++kind) {
-    const auto& labels = labels_of(mesh, kind);
-    const std::size_t count = cells_of(mesh, kind).size() / kKinds[kind].arity;
+    const auto& labels = labels_of_gmsh_kind(mesh, kind);
+    const std::size_t count = cells_of_gmsh_kind(mesh, kind).size() / kKinds[kind].arity;
     std::map<Label, std::vector<std::size_t>> by_label;  // ordered: deterministic entity tags
     for (std::size_t c = 0; c < count; ++c) by_label[labels.empty() ? 0 : labels[c]].push_back(c);
     int tag = 1;
@@ -88,7 +88,7 @@ void append_bounding_box(std::string& out, const MeshData& mesh, const std::vect
 }
 
 std::vector<Index> points_of_entity(const MeshData& mesh, const Entity& entity) {
-  const auto& cells = cells_of(mesh, entity.kind);
+  const auto& cells = cells_of_gmsh_kind(mesh, entity.kind);
   const std::size_t arity = kKinds[entity.kind].arity;
   std::vector<Index> points;
   for (std::size_t c : entity.cells) {
@@ -160,13 +160,13 @@ void append_elements(std::string& out, const MeshData& mesh, const std::vector<E
   std::size_t total = 0;
   for (std::size_t kind = 0; kind < kKinds.size(); ++kind) {
     first_tag[kind] = total;
-    total += cells_of(mesh, kind).size() / kKinds[kind].arity;
+    total += cells_of_gmsh_kind(mesh, kind).size() / kKinds[kind].arity;
   }
   out += "$Elements\n" + std::to_string(entities.size()) + ' ' + std::to_string(total) + ' ' +
          (total == 0 ? std::string("0 0") : "1 " + std::to_string(total)) + '\n';
   for (const Entity& e : entities) {
     const CellKind& kind = kKinds[e.kind];
-    const auto& cells = cells_of(mesh, e.kind);
+    const auto& cells = cells_of_gmsh_kind(mesh, e.kind);
     out += std::to_string(kind.dimension) + ' ' + std::to_string(e.tag) + ' ' + std::to_string(kind.gmsh_type) +
            ' ' + std::to_string(e.cells.size()) + '\n';
     for (std::size_t c : e.cells) {
@@ -494,9 +494,9 @@ class GmshReader {
     }
     const bool any_label = std::any_of(records.begin(), records.end(), [](const CellRecord& c) { return c.label != 0; });
     for (const CellRecord& c : records) {
-      cells_of(mesh, kind).insert(cells_of(mesh, kind).end(), c.nodes.begin(),
+      cells_of_gmsh_kind(mesh, kind).insert(cells_of_gmsh_kind(mesh, kind).end(), c.nodes.begin(),
                                   c.nodes.begin() + static_cast<std::ptrdiff_t>(kKinds[kind].arity));
-      if (any_label) labels_of(mesh, kind).push_back(c.label);
+      if (any_label) labels_of_gmsh_kind(mesh, kind).push_back(c.label);
     }
   }
 

@@ -19,8 +19,8 @@ namespace {
 
 using detail::TextReader;
 
-constexpr std::int64_t kInt64Min = std::numeric_limits<std::int64_t>::min();
-constexpr std::int64_t kInt64Max = std::numeric_limits<std::int64_t>::max();
+constexpr std::int64_t kMeditIntegerMin = std::numeric_limits<std::int64_t>::min();
+constexpr std::int64_t kMeditIntegerMax = std::numeric_limits<std::int64_t>::max();
 
 Label read_ref(TextReader& in, std::string_view what) {
   return static_cast<Label>(in.read_integer(what, std::numeric_limits<Label>::min(),
@@ -28,7 +28,7 @@ Label read_ref(TextReader& in, std::string_view what) {
 }
 
 Index read_vertex_index(TextReader& in, std::size_t vertex_count) {
-  const std::int64_t i = in.read_integer("vertex index", kInt64Min, kInt64Max);
+  const std::int64_t i = in.read_integer("vertex index", kMeditIntegerMin, kMeditIntegerMax);
   if (i == 0) in.fail("vertex index 0 in a 1-based file (the first vertex is 1)");
   if (i < 0 || static_cast<std::uint64_t>(i) > vertex_count) {
     in.fail("vertex index " + std::to_string(i) + " does not exist (the file has " +

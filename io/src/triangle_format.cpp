@@ -25,8 +25,8 @@ namespace {
 using detail::TextReader;
 namespace fs = std::filesystem;
 
-constexpr std::int64_t kInt64Min = std::numeric_limits<std::int64_t>::min();
-constexpr std::int64_t kInt64Max = std::numeric_limits<std::int64_t>::max();
+constexpr std::int64_t kTriangleIntegerMin = std::numeric_limits<std::int64_t>::min();
+constexpr std::int64_t kTriangleIntegerMax = std::numeric_limits<std::int64_t>::max();
 
 // The bound behind every "count cannot fit in the file" check: each field of a record takes at
 // least one byte. (Counting separators too would be tighter, but then a record that merely
@@ -42,7 +42,7 @@ class RecordNumbers {
  public:
   explicit RecordNumbers(std::string what) : what_(std::move(what)) {}
   void read(TextReader& in, std::size_t index) {
-    const std::int64_t id = in.read_integer(what_ + " number", kInt64Min, kInt64Max);
+    const std::int64_t id = in.read_integer(what_ + " number", kTriangleIntegerMin, kTriangleIntegerMax);
     if (index == 0) {
       if (id != 0 && id != 1) {
         in.fail("the first " + what_ + " is numbered " + std::to_string(id) + "; it must be 0 or 1");
@@ -68,7 +68,7 @@ struct PointNumbering {
 };
 
 Index read_vertex(TextReader& in, const PointNumbering& points, std::string_view what) {
-  const std::int64_t id = in.read_integer(what, kInt64Min, kInt64Max);
+  const std::int64_t id = in.read_integer(what, kTriangleIntegerMin, kTriangleIntegerMax);
   if (id == 0 && points.first == 1) {
     in.fail(std::string(what) + " is 0 in a 1-based file (the first point is numbered 1)");
   }
@@ -113,7 +113,7 @@ std::size_t read_small_count(TextReader& in, std::string_view what) {
 // "N dim nattr nmarker" and N point lines; returns how vertex references are numbered.
 PointNumbering read_points(TextReader& in, MeshData& mesh) {
   in.begin_record();
-  const auto count = static_cast<std::size_t>(in.read_integer("point count", 0, kInt64Max));
+  const auto count = static_cast<std::size_t>(in.read_integer("point count", 0, kTriangleIntegerMax));
   const auto dim = static_cast<std::size_t>(in.read_integer("dimension (2 or 3)", 2, 3));
   const std::size_t attributes = read_small_count(in, "point attribute count");
   const auto markers = in.read_integer("point marker count (0 or 1)", 0, 1);
@@ -144,10 +144,10 @@ struct CellSection {
 void read_cells(TextReader& in, const CellSection& section, const PointNumbering& points,
                 std::vector<Index>& cells, std::vector<Label>& labels, std::vector<double>* attributes = nullptr) {
   in.begin_record();
-  const auto count = static_cast<std::size_t>(in.read_integer(section.what + " count", 0, kInt64Max));
+  const auto count = static_cast<std::size_t>(in.read_integer(section.what + " count", 0, kTriangleIntegerMax));
   std::size_t fields_per_label = 0;
   if (section.label_is_attribute) {
-    const auto corners = in.read_integer("nodes per " + section.what, 0, kInt64Max);
+    const auto corners = in.read_integer("nodes per " + section.what, 0, kTriangleIntegerMax);
     if (static_cast<std::size_t>(corners) != section.corners) {
       in.fail(std::to_string(corners) + " nodes per " + section.what + " (certimesh reads linear " +
               section.what + "s: " + std::to_string(section.corners) + ")");
@@ -396,7 +396,7 @@ void append_label_field(std::string& out, const std::vector<Label>& labels, std:
   detail::append_integer(out, labels[i]);
 }
 
-void append_points(std::string& out, const MeshData& mesh) {
+void append_node_points(std::string& out, const MeshData& mesh) {
   const auto dim = static_cast<std::size_t>(mesh.dimension);
   const std::size_t n = mesh.point_count();
   out += std::to_string(n) + " " + std::to_string(dim) + " 0 " + (mesh.point_labels.empty() ? "0\n" : "1\n");
@@ -527,7 +527,7 @@ std::string format_poly(const MeshData& mesh, const std::string& name, bool smes
     }
   }
   std::string out;
-  append_points(out, mesh);
+  append_node_points(out, mesh);
   if (mesh.dimension == 2) {
     out += marker_header(mesh.segment_count(), mesh.segment_labels);
     append_cell_records(out, mesh.segments, mesh.segment_labels, 2);
@@ -576,7 +576,7 @@ void write_mesh_files(const MeshData& mesh, const fs::path& path) {
     throw FormatError(path.string(), 0, "holes, region points and facets go only in a .poly file");
   }
   std::string node;
-  append_points(node, mesh);
+  append_node_points(node, mesh);
   const std::string ele = format_ele(mesh);
   // A companion that the mesh does not need is still written (empty) when a stale one
   // exists, so that reading X back gives exactly the mesh written.

@@ -470,10 +470,10 @@ constexpr std::int64_t kVtkLine = 3;
 constexpr std::int64_t kVtkTriangle = 5;
 constexpr std::int64_t kVtkTetra = 10;
 
-std::vector<Index>& cells_of(MeshData& mesh, std::size_t kind) {
+std::vector<Index>& cells_of_vtu_kind(MeshData& mesh, std::size_t kind) {
   return kind == 0 ? mesh.segments : kind == 1 ? mesh.triangles : mesh.tetrahedra;
 }
-std::vector<Label>& labels_of(MeshData& mesh, std::size_t kind) {
+std::vector<Label>& labels_of_vtu_kind(MeshData& mesh, std::size_t kind) {
   return kind == 0 ? mesh.segment_labels : kind == 1 ? mesh.triangle_labels : mesh.tetrahedron_labels;
 }
 
@@ -678,7 +678,7 @@ class VtuInterpreter {
       if (v < 0 || static_cast<std::size_t>(v) >= points) {
         fail(connectivity, "cell " + std::to_string(c) + " names point " + std::to_string(v) + ", outside [0, " + std::to_string(points) + ")");
       }
-      cells_of(mesh, kind).push_back(static_cast<Index>(v));
+      cells_of_vtu_kind(mesh, kind).push_back(static_cast<Index>(v));
     }
   }
 
@@ -690,7 +690,7 @@ class VtuInterpreter {
     }
     for (std::size_t kind = 0; kind < 3; ++kind) {
       const auto& labels = per_kind[kind];
-      if (std::any_of(labels.begin(), labels.end(), [](Label l) { return l != 0; })) labels_of(mesh, kind) = labels;
+      if (std::any_of(labels.begin(), labels.end(), [](Label l) { return l != 0; })) labels_of_vtu_kind(mesh, kind) = labels;
     }
   }
 
@@ -741,7 +741,7 @@ void append_integer_array(std::string& out, const char* type, const char* name, 
   out += "        </DataArray>\n";
 }
 
-void append_points(std::string& out, const MeshData& mesh) {
+void append_vtu_points(std::string& out, const MeshData& mesh) {
   out += "      <Points>\n        <DataArray type=\"Float64\" NumberOfComponents=\"3\" format=\"ascii\">\n";
   const auto d = static_cast<std::size_t>(mesh.dimension);
   for (std::size_t i = 0; i < mesh.point_count(); ++i) {
@@ -817,7 +817,7 @@ std::string format_vtu_named(const MeshData& mesh, const std::string& name) {
     append_integer_array(out, "Int32", "label", mesh.point_labels);
     out += "      </PointData>\n";
   }
-  append_points(out, mesh);
+  append_vtu_points(out, mesh);
   append_cells_and_labels(out, mesh);
   out += "    </Piece>\n  </UnstructuredGrid>\n</VTKFile>\n";
   return out;

@@ -65,7 +65,7 @@ Split lift_of(double x, double y) {
 // cycle plift * ((qdx * rdy_t + rdy * qdx_t) - (qdy * rdx_t + rdx * qdy_t))
 // + 2 (pdx * pdx_t + pdy * pdy_t) * pm, in the order proofs/gappa/incircle_compensated.g
 // models.
-double first_order_correction(const std::array<double, 6>& h, const std::array<double, 6>& t,
+double incircle_first_order_correction(const std::array<double, 6>& h, const std::array<double, 6>& t,
                               const std::array<Split, 3>& lift,
                               const std::array<Split, 3>& minor) {
   std::array<double, 3> corr;
@@ -86,7 +86,7 @@ double first_order_correction(const std::array<double, 6>& h, const std::array<d
 // (proofs/gappa/incircle_compensated.g, proofs/README.md section 12). Branch-free and
 // without expansions: on near-cocircular input it decides where the filter cannot. The
 // evaluation order is the one the proof models. Zero when it cannot decide.
-Sign compensated_stage(const std::array<double, 6>& h, const std::array<double, 6>& t,
+Sign incircle_compensated_stage(const std::array<double, 6>& h, const std::array<double, 6>& t,
                        double m) {
   namespace k = filter_constants;
   std::array<Split, 3> lift, minor;
@@ -95,7 +95,7 @@ Sign compensated_stage(const std::array<double, 6>& h, const std::array<double, 
     lift[i] = lift_of(h[p], h[p + 1]);
     minor[i] = compensated_minor(h[q], h[r + 1], h[r], h[q + 1]);  // pm = qdx rdy - rdx qdy
   }
-  const double correction = first_order_correction(h, t, lift, minor);
+  const double correction = incircle_first_order_correction(h, t, lift, minor);
   std::array<double, 3> s, lo_term;
   for (std::size_t i = 0; i < 3; ++i) {
     double se;
@@ -116,13 +116,13 @@ Sign compensated_stage(const std::array<double, 6>& h, const std::array<double, 
 // incircle filter's guards; expansion arithmetic exact for h, which also makes every
 // two_product tail of the stage exact: proofs/README.md section 12); zero otherwise or
 // when undecided.
-Sign compensated_sign(const std::array<double, 6>& h, const std::array<double, 6>& t) {
+Sign incircle_compensated_sign(const std::array<double, 6>& h, const std::array<double, 6>& t) {
   namespace k = filter_constants;
   double m = 0.0;
   for (double v : h) m = std::max(m, std::fabs(v));
   if (!(m >= k::incircle_lower_guard && m <= k::incircle_upper_guard)) return Sign::zero;
   if (!expansion_safe(h, 4)) return Sign::zero;
-  return compensated_stage(h, t, m);
+  return incircle_compensated_stage(h, t, m);
 }
 
 // The small-integer stage (proofs/README.md section 13). When every coordinate is an
@@ -178,7 +178,7 @@ Sign incircle_exact_stage(const Point2& a, const Point2& b, const Point2& c, con
     exact_diffs = exact_diffs && tails[i] == 0.0;
   }
   // Near-degenerate input mostly ends here, without expansions.
-  const Sign compensated = compensated_sign(diffs, tails);
+  const Sign compensated = incircle_compensated_sign(diffs, tails);
   if (compensated != Sign::zero) return compensated;
   if (exact_diffs && expansion_safe(diffs, 4)) return translated_incircle(diffs);
   if (expansion_safe(raw, 4)) return raw_incircle(a, b, c, d);

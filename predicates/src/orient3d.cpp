@@ -32,7 +32,7 @@ Expansion<24> translated_orient3d(const std::array<double, 9>& h) {
 // The first-order change of det(h) when every entry h_i moves by its tail t_i: the sum of
 // t_i times the cofactor of h_i, in double, in the order proofs/gappa/orient3d_stage2.g
 // models.
-double first_order_correction(const std::array<double, 9>& h, const std::array<double, 9>& t) {
+double orient3d_first_order_correction(const std::array<double, 9>& h, const std::array<double, 9>& t) {
   const double adx = h[0], ady = h[1], adz = h[2], bdx = h[3], bdy = h[4], bdz = h[5],
                cdx = h[6], cdy = h[7], cdz = h[8];
   const double cax = bdy * cdz - bdz * cdy, cay = bdz * cdx - bdx * cdz,
@@ -54,7 +54,7 @@ double first_order_correction(const std::array<double, 9>& h, const std::array<d
 // (proofs/gappa/orient3d_compensated.g, proofs/README.md section 11). Branch-free and
 // without expansions: on near-coplanar input it decides where the filter cannot. The
 // evaluation order is the one the proof models. Zero when it cannot decide.
-Sign compensated_stage(const std::array<double, 9>& h, double correction, double maxx,
+Sign orient3d_compensated_stage(const std::array<double, 9>& h, double correction, double maxx,
                        double maxy, double maxz) {
   namespace k = filter_constants;
   const Compensated ca = compensated_minor(h[4], h[8], h[5], h[7]);  // bdy * cdz - bdz * cdy
@@ -90,10 +90,10 @@ bool stage_maxima(const std::array<double, 9>& h, double& maxx, double& maxy, do
 }
 
 // The compensated stage where its preconditions hold; zero otherwise or when undecided.
-Sign compensated_sign(const std::array<double, 9>& h, const std::array<double, 9>& t) {
+Sign orient3d_compensated_sign(const std::array<double, 9>& h, const std::array<double, 9>& t) {
   double maxx, maxy, maxz;
   if (!stage_maxima(h, maxx, maxy, maxz)) return Sign::zero;
-  return compensated_stage(h, first_order_correction(h, t), maxx, maxy, maxz);
+  return orient3d_compensated_stage(h, orient3d_first_order_correction(h, t), maxx, maxy, maxz);
 }
 
 // The second stage: exact det(h) plus the first-order tail correction; the neglected
@@ -104,7 +104,7 @@ Sign second_stage(const std::array<double, 9>& h, const std::array<double, 9>& t
   namespace k = filter_constants;
   double maxx, maxy, maxz;
   if (!stage_maxima(h, maxx, maxy, maxz)) return Sign::zero;
-  const auto estimate = translated_orient3d(h) + expansion_of(first_order_correction(h, t));
+  const auto estimate = translated_orient3d(h) + expansion_of(orient3d_first_order_correction(h, t));
   return sign_beyond(estimate, k::orient3d_stage2_bound * maxx * maxy * maxz);
 }
 
@@ -121,7 +121,7 @@ Sign orient3d_exact_stage(const Point3& a, const Point3& b, const Point3& c, con
     exact_diffs = exact_diffs && tails[i] == 0.0;
   }
   // Near-degenerate input mostly ends here, without expansions.
-  const Sign compensated = compensated_sign(diffs, tails);
+  const Sign compensated = orient3d_compensated_sign(diffs, tails);
   if (compensated != Sign::zero) return compensated;
   // Exact differences (nearby points): the translated determinant is already exact.
   if (exact_diffs && expansion_safe(diffs, 3)) return translated_orient3d(diffs).sign();

@@ -6,7 +6,7 @@ namespace certimesh::topology {
 
 namespace {
 
-int local_index(const auto& element, VertexId v) {
+int index_in_element(const auto& element, VertexId v) {
   for (std::size_t i = 0; i < element.size(); ++i)
     if (element[i] == v) return static_cast<int>(i);
   return -1;
@@ -33,10 +33,10 @@ std::vector<EdgeRecord> extract_edges(const Mesh& mesh, const VertexStars<Mesh>&
       EdgeRecord edge{va, vb, 0, false};
       for (const std::uint32_t e : stars.elements_around(va)) {
         const auto element = mesh.vertices(ElementId{e});
-        const int lb = local_index(element, vb);
+        const int lb = index_in_element(element, vb);
         if (lb < 0) continue;
         ++edge.element_count;
-        edge.boundary = edge.boundary || edge_on_open_facet(mesh, ElementId{e}, local_index(element, va), lb);
+        edge.boundary = edge.boundary || edge_on_open_facet(mesh, ElementId{e}, index_in_element(element, va), lb);
       }
       edges.push_back(edge);
     }

@@ -15,7 +15,7 @@ namespace {
 namespace pr = certimesh::predicates;
 
 template <std::size_t N>
-double distance(const std::array<double, N>& p, const std::array<double, N>& q) {
+double distance_nd(const std::array<double, N>& p, const std::array<double, N>& q) {
   double sum = 0.0;
   for (std::size_t i = 0; i < N; ++i) sum += (q[i] - p[i]) * (q[i] - p[i]);
   return std::sqrt(sum);
@@ -24,12 +24,12 @@ double distance(const std::array<double, N>& p, const std::array<double, N>& q) 
 template <std::size_t N>
 double perimeter(const std::array<double, N>& a, const std::array<double, N>& b,
                  const std::array<double, N>& c) {
-  return distance(a, b) + distance(b, c) + distance(c, a);
+  return distance_nd(a, b) + distance_nd(b, c) + distance_nd(c, a);
 }
 
 double total_edge_length(const Point3d& a, const Point3d& b, const Point3d& c, const Point3d& d) {
-  return distance(a, b) + distance(a, c) + distance(a, d) + distance(b, c) + distance(b, d) +
-         distance(c, d);
+  return distance_nd(a, b) + distance_nd(a, c) + distance_nd(a, d) + distance_nd(b, c) + distance_nd(b, d) +
+         distance_nd(c, d);
 }
 
 Point3d difference(const Point3d& p, const Point3d& q) { return {p[0] - q[0], p[1] - q[1], p[2] - q[2]}; }

@@ -56,7 +56,7 @@ constexpr double kCosFlatCorner = -0.99999998;                 // cos 179.989 de
 constexpr std::uint32_t kInputRank = 0;
 constexpr std::uint32_t kGrownRank = 1;
 
-double squared_distance(const Point2& p, const Point2& q) {
+double squared_distance_2(const Point2& p, const Point2& q) {
   const double dx = p.x - q.x, dy = p.y - q.y;
   return dx * dx + dy * dy;
 }
@@ -67,14 +67,14 @@ double squared_distance_to_segment(const Point2& p, const Point2& a, const Point
   const double length2 = ux * ux + uy * uy;
   double t = length2 > 0.0 ? ((p.x - a.x) * ux + (p.y - a.y) * uy) / length2 : 0.0;
   t = std::clamp(t, 0.0, 1.0);
-  return squared_distance(p, Point2{a.x + t * ux, a.y + t * uy});
+  return squared_distance_2(p, Point2{a.x + t * ux, a.y + t * uy});
 }
 
 /// Shape quality 12√3 S / P² (approximate: it only orders candidates).
-double shape_quality(const Point2& a, const Point2& b, const Point2& c) {
+double triangle_shape_quality(const Point2& a, const Point2& b, const Point2& c) {
   const double twice_area = (b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x);
-  const double perimeter = std::sqrt(squared_distance(a, b)) + std::sqrt(squared_distance(b, c)) +
-                           std::sqrt(squared_distance(c, a));
+  const double perimeter = std::sqrt(squared_distance_2(a, b)) + std::sqrt(squared_distance_2(b, c)) +
+                           std::sqrt(squared_distance_2(c, a));
   return 6.0 * 1.73205080756887729353 * twice_area / (perimeter * perimeter);
 }
 
@@ -141,7 +141,7 @@ class AdvancingFront {
   std::uint64_t triangles() const { return result_.triangles.size(); }
   const Point2& point(std::uint32_t v) const { return result_.points[v]; }
   double edge_length(std::uint32_t a, std::uint32_t b) const {
-    return std::sqrt(squared_distance(point(a), point(b)));
+    return std::sqrt(squared_distance_2(point(a), point(b)));
   }
   Point2 midpoint(std::uint32_t a, std::uint32_t b) const {
     return Point2{0.5 * (point(a).x + point(b).x), 0.5 * (point(a).y + point(b).y)};
@@ -159,7 +159,7 @@ class AdvancingFront {
 
   // `rank`: kInputRank for the input front, kGrownRank for the edges the front grows.
   void insert_edge(std::uint32_t a, std::uint32_t b, std::uint32_t rank) {
-    const std::uint32_t e = front_.insert(a, b, rank, squared_distance(point(a), point(b)));
+    const std::uint32_t e = front_.insert(a, b, rank, squared_distance_2(point(a), point(b)));
     grid_.insert(e, point(a), point(b));
     if (e >= edge_stamp_.size()) edge_stamp_.push_back(0);
   }
@@ -243,7 +243,7 @@ class AdvancingFront {
   bool gather(const Step& st, bool global, Box2& box) {
     // A corner apex (corner_apex) may stand farther than s from v1 or v2: the box grows to
     // keep both inside.
-    const double reach = std::sqrt(std::max(squared_distance(st.apex, st.p1), squared_distance(st.apex, st.p2)));
+    const double reach = std::sqrt(std::max(squared_distance_2(st.apex, st.p1), squared_distance_2(st.apex, st.p2)));
     const double radius = kSearchRadiusFactor * std::max({st.size.s, st.size.r, reach});
     box = Box2{st.apex.x - radius, st.apex.y - radius, st.apex.x + radius, st.apex.y + radius};
     if (!global && !(box.contains(st.p1) && box.contains(st.p2))) return false;
@@ -278,7 +278,7 @@ class AdvancingFront {
   bool apex_allowed(const Step& st, bool exact) const {
     const double r2 = st.size.r * st.size.r, h2 = st.size.h * st.size.h;
     for (const std::uint32_t v : nearby_)
-      if (squared_distance(point(v), st.apex) < r2) return false;
+      if (squared_distance_2(point(v), st.apex) < r2) return false;
     for (const std::uint32_t e : local_edges_)
       if (squared_distance_to_segment(st.apex, point(front_.edge(e).a), point(front_.edge(e).b)) < h2)
         return false;
@@ -317,11 +317,11 @@ class AdvancingFront {
     for (const std::uint32_t v : nearby_) {
       if (v == st.v1 || v == st.v2 || orientation(st.p1, st.p2, point(v), exact) <= 0) continue;
       if (!exact && flat_corner(st, v)) continue;  // the global retry may still close it
-      const double d2 = squared_distance(point(v), st.apex);
+      const double d2 = squared_distance_2(point(v), st.apex);
       if (d2 < near2 && !wide_corner(st, v))
         candidates_.push_back(Candidate{v, 0, -d2});
       else
-        candidates_.push_back(Candidate{v, 2, shape_quality(st.p1, st.p2, point(v))});
+        candidates_.push_back(Candidate{v, 2, triangle_shape_quality(st.p1, st.p2, point(v))});
     }
     if (apex_allowed(st, exact)) candidates_.push_back(Candidate{st.apex_id, 1, 0.0});
     std::sort(candidates_.begin(), candidates_.end(), better);

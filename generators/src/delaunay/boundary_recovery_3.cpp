@@ -70,7 +70,7 @@ void start_with_delaunay(RecoveryMesh& m, const Surface3& s, BoundaryRecoveryCou
 }
 
 // Design decision 2 for --refine-surface: each surface Steiner point rounded to nearest once.
-double round_to_nearest(const mpq_class& q) {
+double round_rational_to_nearest(const mpq_class& q) {
   const mpfr_exp_t saved_emin = mpfr_get_emin(), saved_emax = mpfr_get_emax();
   mpfr_set_emin(-1073);
   mpfr_set_emax(1024);
@@ -88,7 +88,7 @@ void round_surface_steiner_points(RecoveryMesh& m) {
   for (std::uint32_t v = 0; v < m.vertices.size(); ++v) {
     RecoveryVertex& r = m.vertices[v];
     if (r.origin != RecoveryVertex::Origin::on_edge && r.origin != RecoveryVertex::Origin::on_face) continue;
-    const Point3 p{round_to_nearest(r.exact[0]), round_to_nearest(r.exact[1]), round_to_nearest(r.exact[2])};
+    const Point3 p{round_rational_to_nearest(r.exact[0]), round_rational_to_nearest(r.exact[1]), round_rational_to_nearest(r.exact[2])};
     m.set_double_point(VertexId{v}, p, r.origin);
   }
 }

@@ -37,7 +37,7 @@ bool strictly_between(const Point2& a, const Point2& b, const Point2& p) {
   return std::min(a.y, b.y) < p.y && p.y < std::max(a.y, b.y);
 }
 
-std::string describe(const Point2& p) {
+std::string describe_point2(const Point2& p) {
   std::ostringstream out;
   out.precision(17);
   out << '(' << p.x << ' ' << p.y << ')';
@@ -56,18 +56,18 @@ ConstrainedDelaunay2::ConstrainedDelaunay2(std::span<const Point2> points, const
 void ConstrainedDelaunay2::throw_duplicate(VertexId a, VertexId b) const {
   const VertexId ea = external_[a], eb = external_[b];
   throw DelaunayError("delaunay: points " + std::to_string(std::min(ea, eb)) + " and " +
-                      std::to_string(std::max(ea, eb)) + " are the same point " + describe(points_[a]));
+                      std::to_string(std::max(ea, eb)) + " are the same point " + describe_point2(points_[a]));
 }
 
 std::string ConstrainedDelaunay2::constraint_name(VertexId a, VertexId b) const {
   return "constraint " + std::to_string(external_[a]) + "-" + std::to_string(external_[b]) + " " +
-         describe(pt(a)) + "-" + describe(pt(b));
+         describe_point2(pt(a)) + "-" + describe_point2(pt(b));
 }
 
 void ConstrainedDelaunay2::build(std::span<const Point2> input, const ProgressCallback& progress) {
   for (std::size_t i = 0; i < input.size(); ++i)
     if (!std::isfinite(input[i].x) || !std::isfinite(input[i].y))
-      throw DelaunayError("delaunay: point " + std::to_string(i) + " " + describe(input[i]) + " is not finite");
+      throw DelaunayError("delaunay: point " + std::to_string(i) + " " + describe_point2(input[i]) + " is not finite");
   if (input.size() >= ghost) throw DelaunayError("delaunay: too many points");
   // Internal ids follow the insertion order.
   external_ = detail::hilbert_order(input);
@@ -392,7 +392,7 @@ std::vector<std::array<ConstrainedDelaunay2::VertexId, 2>> ConstrainedDelaunay2:
   const Point2 &pa = pt(a), &pb = pt(b);
   auto on_segment = [&](VertexId w) {
     throw DelaunayError("delaunay: " + constraint_name(a, b) + " passes through point " + std::to_string(external_[w]) + " " +
-                        describe(pt(w)));
+                        describe_point2(pt(w)));
   };
   std::vector<std::array<VertexId, 2>> crossed;
   auto cross = [&](TriangleId t, std::uint32_t local, VertexId l, VertexId r) {

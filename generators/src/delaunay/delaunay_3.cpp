@@ -29,14 +29,14 @@ constexpr std::uint32_t infinite = Delaunay3::none;
 // orient3d(face[i], p) > 0.
 constexpr std::uint32_t face[4][3] = {{1, 3, 2}, {0, 2, 3}, {0, 3, 1}, {0, 1, 2}};
 
-std::string describe(const Point3& p) {
+std::string describe_point3(const Point3& p) {
   std::ostringstream out;
   out.precision(17);
   out << '(' << p.x << ' ' << p.y << ' ' << p.z << ')';
   return out.str();
 }
 
-bool collinear(const Point3& a, const Point3& b, const Point3& c) {
+bool collinear_3(const Point3& a, const Point3& b, const Point3& c) {
   using predicates::orient2d;
   using predicates::Point2;
   using predicates::Sign;
@@ -45,7 +45,7 @@ bool collinear(const Point3& a, const Point3& b, const Point3& c) {
          orient2d(Point2{a.z, a.x}, Point2{b.z, b.x}, Point2{c.z, c.x}) == Sign::zero;
 }
 
-constexpr std::uint64_t edge_key(std::uint32_t u, std::uint32_t w) { return (std::uint64_t{u} << 32) | w; }
+constexpr std::uint64_t delaunay3_edge_key(std::uint32_t u, std::uint32_t w) { return (std::uint64_t{u} << 32) | w; }
 constexpr std::uint64_t empty_key = ~std::uint64_t{0};
 
 }  // namespace
@@ -55,7 +55,7 @@ Delaunay3::Delaunay3(std::span<const Point3> points, const ProgressCallback& pro
 void Delaunay3::throw_duplicate(VertexId a, VertexId b) const {
   const VertexId ea = external_[a], eb = external_[b];
   throw DelaunayError("delaunay: points " + std::to_string(std::min(ea, eb)) + " and " +
-                      std::to_string(std::max(ea, eb)) + " are the same point " + describe(points_[a]));
+                      std::to_string(std::max(ea, eb)) + " are the same point " + describe_point3(points_[a]));
 }
 
 void Delaunay3::check_distinct() const {
@@ -72,7 +72,7 @@ void Delaunay3::check_distinct() const {
 void Delaunay3::build(std::span<const Point3> input, const ProgressCallback& progress) {
   for (std::size_t i = 0; i < input.size(); ++i)
     if (!std::isfinite(input[i].x) || !std::isfinite(input[i].y) || !std::isfinite(input[i].z))
-      throw DelaunayError("delaunay: point " + std::to_string(i) + " " + describe(input[i]) + " is not finite");
+      throw DelaunayError("delaunay: point " + std::to_string(i) + " " + describe_point3(input[i]) + " is not finite");
   // Half-face ids (4 * slot + local) are 32-bit: about 6.8 slots per point leaves room for 2^27.
   if (input.size() > (std::size_t{1} << 27))
     throw DelaunayError("delaunay: " + std::to_string(input.size()) + " points: at most 2^27 are supported");
@@ -93,7 +93,7 @@ void Delaunay3::build(std::span<const Point3> input, const ProgressCallback& pro
   if (pt(0) == pt(1)) throw_duplicate(0, 1);
   std::size_t third = n, fourth = n;
   for (std::size_t k = 2; k < n && third == n; ++k)
-    if (!collinear(pt(0), pt(1), pt(static_cast<VertexId>(k)))) third = k;
+    if (!collinear_3(pt(0), pt(1), pt(static_cast<VertexId>(k)))) third = k;
   for (std::size_t k = third + 1; k < n && fourth == n; ++k)
     if (orient3d_exact(pt(0), pt(1), pt(static_cast<VertexId>(third)), pt(static_cast<VertexId>(k))) != 0) fourth = k;
   if (fourth >= n) {
@@ -182,10 +182,10 @@ void Delaunay3::link_around(VertexId apex, std::span<const TetrahedronId> tetrah
         u = f0 == apex ? f1 : (f1 == apex ? f2 : f0);
         w = f0 == apex ? f2 : (f1 == apex ? f0 : f1);
       }
-      std::size_t s = slot_of(edge_key(u, w));
+      std::size_t s = slot_of(delaunay3_edge_key(u, w));
       while (edges_[s].key != empty_key) s = (s + 1) & mask;
-      edges_[s] = {edge_key(u, w), 4 * t + j};
-      pending_.push_back({edge_key(w, u), 4 * t + j, static_cast<std::uint32_t>(s)});
+      edges_[s] = {delaunay3_edge_key(u, w), 4 * t + j};
+      pending_.push_back({delaunay3_edge_key(w, u), 4 * t + j, static_cast<std::uint32_t>(s)});
     }
   }
   for (const PendingFace& f : pending_) {

@@ -11,9 +11,9 @@ namespace certimesh::generators {
 
 namespace {
 
-using TriangleId = ConstrainedDelaunay2::TriangleId;
-using VertexId = ConstrainedDelaunay2::VertexId;
-constexpr std::uint32_t none = ConstrainedDelaunay2::none;
+using CdtTriangleId = ConstrainedDelaunay2::TriangleId;
+using CdtVertexId = ConstrainedDelaunay2::VertexId;
+constexpr std::uint32_t no_id = ConstrainedDelaunay2::none;
 constexpr double pi = 3.141592653589793;
 
 using detail::circumcentre;
@@ -31,10 +31,10 @@ class Refiner {
 
   DelaunayRefinementStats run(const ProgressCallback& progress) {
     stats_.insertion_bound = options_.max_insertions ? options_.max_insertions : packing_bound();
-    for (TriangleId t = 0; t < cdt_.triangle_slot_count(); ++t) consider(t);
+    for (CdtTriangleId t = 0; t < cdt_.triangle_slot_count(); ++t) consider(t);
     while (!queue_.empty()) {
-      const TriangleId t = queue_.pop(cdt_);
-      if (t == none) continue;
+      const CdtTriangleId t = queue_.pop(cdt_);
+      if (t == no_id) continue;
       if (stats_.inserted >= stats_.insertion_bound) {
         stats_.bound_reached = true;
         break;
@@ -53,7 +53,7 @@ class Refiner {
   // The longest constrained edge of an inside triangle, times the growth factor.
   double automatic_size() const {
     double longest = 0.0;
-    for (TriangleId t = 0; t < cdt_.triangle_slot_count(); ++t) {
+    for (CdtTriangleId t = 0; t < cdt_.triangle_slot_count(); ++t) {
       if (!cdt_.is_live(t) || labels_[t] < 0) continue;
       const auto v = cdt_.vertices(t);
       for (int i = 0; i < 3; ++i)
@@ -69,7 +69,7 @@ class Refiner {
   std::uint64_t packing_bound() const {
     double area = 0.0, smallest = 0.0;
     bool first = true;
-    for (TriangleId t = 0; t < cdt_.triangle_slot_count(); ++t) {
+    for (CdtTriangleId t = 0; t < cdt_.triangle_slot_count(); ++t) {
       if (!cdt_.is_live(t) || labels_[t] < 0) continue;
       const Corners c(cdt_, t);
       area += std::fabs((c.p[1].x - c.p[0].x) * (c.p[2].y - c.p[0].y) - (c.p[1].y - c.p[0].y) * (c.p[2].x - c.p[0].x)) / 2;
@@ -84,7 +84,7 @@ class Refiner {
   }
 
   // 0 when t is fine; otherwise how bad, too-big triangles first (badness > 1 + ratio).
-  double badness(TriangleId t) const {
+  double badness(CdtTriangleId t) const {
     if (!cdt_.is_live(t) || labels_[t] < 0) return 0.0;
     const Corners c(cdt_, t);
     const double h = size_at(c.centroid());
@@ -97,26 +97,26 @@ class Refiner {
     return 0.0;
   }
 
-  void consider(TriangleId t) {
+  void consider(CdtTriangleId t) {
     const double b = badness(t);
     if (b > 0.0) queue_.push(cdt_, t, b);
   }
 
-  bool far_enough(const Point2& q, TriangleId around, double h) const {
+  bool far_enough(const Point2& q, CdtTriangleId around, double h) const {
     const Corners c(cdt_, around);
     return std::min({distance(q, c.p[0]), distance(q, c.p[1]), distance(q, c.p[2])}) >= h / 4;
   }
 
   // A safe point for t: its circumcentre when reachable inside its region, else (t too big)
   // the midpoint of its longest unconstrained edge.
-  void refine(TriangleId t) {
+  void refine(CdtTriangleId t) {
     const int label = labels_[t];
     const Corners c(cdt_, t);
     const double h = size_at(c.centroid());
     const bool too_big = h > 0.0 && longest_side(c.p[0], c.p[1], c.p[2]) > h;
     const Point2 centre = circumcentre(c.p[0], c.p[1], c.p[2]);
-    const TriangleId holder = std::isfinite(centre.x) && std::isfinite(centre.y) ? detail::straight_walk(cdt_, t, centre).holder : none;
-    if (holder != none && labels_[holder] == label && far_enough(centre, holder, size_at(centre))) {
+    const CdtTriangleId holder = std::isfinite(centre.x) && std::isfinite(centre.y) ? detail::straight_walk(cdt_, t, centre).holder : no_id;
+    if (holder != no_id && labels_[holder] == label && far_enough(centre, holder, size_at(centre))) {
       if (insert(centre, holder, label)) {
         ++stats_.circumcentres;
         return;
@@ -129,17 +129,17 @@ class Refiner {
     ++stats_.skipped;
   }
 
-  bool insert_edge_midpoint(TriangleId t, const Corners& c, double h, int label) {
+  bool insert_edge_midpoint(CdtTriangleId t, const Corners& c, double h, int label) {
     int best = -1;
     double best_length = 0.0;
     for (int i = 0; i < 3; ++i) {
       const double l = distance(c.p[static_cast<std::size_t>((i + 1) % 3)], c.p[static_cast<std::size_t>((i + 2) % 3)]);
-      if (!cdt_.is_constrained(t, i) && cdt_.neighbour(t, i) != none && l > best_length) best = i, best_length = l;
+      if (!cdt_.is_constrained(t, i) && cdt_.neighbour(t, i) != no_id && l > best_length) best = i, best_length = l;
     }
     if (best < 0 || !(best_length > h)) return false;
     const Point2 &a = c.p[static_cast<std::size_t>((best + 1) % 3)], &b = c.p[static_cast<std::size_t>((best + 2) % 3)];
     const Point2 m{a.x + (b.x - a.x) / 2, a.y + (b.y - a.y) / 2};
-    const TriangleId other = cdt_.neighbour(t, best);
+    const CdtTriangleId other = cdt_.neighbour(t, best);
     if (labels_[other] != label || !far_enough(m, t, h) || !far_enough(m, other, h)) return false;
     return insert(m, t, label);
   }
@@ -148,24 +148,24 @@ class Refiner {
   // it need not lie on its edge: next to a segment it can fall across it, outside the region
   // (an edge along a segment, between points rounded onto the segment's line). The cavity
   // never crosses a constrained edge, so q's star then stays inside the region.
-  bool insert(const Point2& q, TriangleId hint, int label) {
-    const TriangleId at = cdt_.locate(q, hint);
-    if (at == none || !cdt_.is_live(at) || labels_[at] != label) return false;
-    const VertexId v = cdt_.insert_point(q, at);
-    if (v == none) return false;
+  bool insert(const Point2& q, CdtTriangleId hint, int label) {
+    const CdtTriangleId at = cdt_.locate(q, hint);
+    if (at == no_id || !cdt_.is_live(at) || labels_[at] != label) return false;
+    const CdtVertexId v = cdt_.insert_point(q, at);
+    if (v == no_id) return false;
     ++stats_.inserted;
     labels_.resize(cdt_.triangle_slot_count(), -1);
     // Every new triangle is incident to v (Bowyer-Watson star) and inside its region.
-    const TriangleId first = cdt_.incident_triangle(v);
+    const CdtTriangleId first = cdt_.incident_triangle(v);
     for (int direction = 1; direction <= 2; ++direction) {
-      TriangleId t = first;
+      CdtTriangleId t = first;
       do {
         labels_[t] = label;
         consider(t);
         const auto vs = cdt_.vertices(t);
         const int k = vs[0] == v ? 0 : (vs[1] == v ? 1 : 2);
         t = cdt_.neighbour(t, (k + direction) % 3);
-      } while (t != none && t != first);
+      } while (t != no_id && t != first);
       if (t == first) break;
     }
     return true;

@@ -19,7 +19,7 @@ namespace certimesh::generators::detail {
 
 namespace {
 
-std::string point_text(const Point3& p) {
+std::string point3_text(const Point3& p) {
   return "(" + std::to_string(p.x) + ", " + std::to_string(p.y) + ", " + std::to_string(p.z) + ")";
 }
 
@@ -97,7 +97,7 @@ VertexId step(RecoveryMesh& m, const Surface3& s, std::uint32_t e, VertexId u, b
       const VertexId w = corners[static_cast<std::size_t>(j)];
       if (w != b && m.vertices[w.value].origin == RecoveryVertex::Origin::input)
         throw BoundaryRecoveryError("error: surface vertex " + std::to_string(w.value) + " " +
-                                    point_text(m.vertices[w.value].approx) + " lies on surface edge (" +
+                                    point3_text(m.vertices[w.value].approx) + " lies on surface edge (" +
                                     std::to_string(a.value) + ", " + std::to_string(b.value) +
                                     "): the surface intersects itself");
       if (w != b) recovery_invariant_broken("a Steiner point lies on another surface edge");

@@ -17,24 +17,24 @@ namespace certimesh::generators {
 
 namespace {
 
-using TriangleId = ConstrainedDelaunay2::TriangleId;
-using VertexId = ConstrainedDelaunay2::VertexId;
+using CdtTriangleId = ConstrainedDelaunay2::TriangleId;
+using CdtVertexId = ConstrainedDelaunay2::VertexId;
 using detail::circumcentre;
 using detail::Corners;
 using detail::distance;
 constexpr std::uint32_t none = ConstrainedDelaunay2::none;
 constexpr double degree = 3.14159265358979323846 / 180.0;
 
-std::uint64_t edge_key(VertexId u, VertexId w) {
+std::uint64_t cdt_edge_key(CdtVertexId u, CdtVertexId w) {
   return (std::uint64_t{std::min(u, w)} << 32) | std::max(u, w);
 }
 
-double dot(const Point2& o, const Point2& a, const Point2& b) {
+double dot_about(const Point2& o, const Point2& a, const Point2& b) {
   return (a.x - o.x) * (b.x - o.x) + (a.y - o.y) * (b.y - o.y);
 }
 
 // Whether c lies strictly inside the diametral circle of (a, b): the angle acb exceeds 90°.
-bool in_diametral_circle(const Point2& a, const Point2& b, const Point2& c) { return dot(c, a, b) < 0.0; }
+bool in_diametral_circle(const Point2& a, const Point2& b, const Point2& c) { return dot_about(c, a, b) < 0.0; }
 
 // Where a vertex lies: on which input segment (none for an interior or input vertex) and at
 // which fraction of it (the double whose exact point was rounded to the vertex).
@@ -55,15 +55,15 @@ class QualityRefiner {
     places_.resize(cdt_.vertex_count());
     for (std::uint32_t i = 0; i < subsegments_.size(); ++i) {
       const Subsegment2& s = subsegments_[i];
-      index_of_.emplace(edge_key(s.a, s.b), i);
-      for (const VertexId v : {s.a, s.b})
+      index_of_.emplace(cdt_edge_key(s.a, s.b), i);
+      for (const CdtVertexId v : {s.a, s.b})
         if (v >= options_.input_vertices) places_[v] = {s.segment, projected_fraction(s.segment, cdt_.point(v))};
     }
   }
 
   QualityRefinementStats run(const ProgressCallback& progress) {
     for (std::uint32_t i = 0; i < subsegments_.size(); ++i) check_encroached(subsegments_[i].a, subsegments_[i].b);
-    for (TriangleId t = 0; t < cdt_.triangle_slot_count(); ++t) consider(t);
+    for (CdtTriangleId t = 0; t < cdt_.triangle_slot_count(); ++t) consider(t);
     while (!stats_.cap_reached) {
       if (!encroached_.empty()) {
         const Encroached e = encroached_.front();
@@ -72,7 +72,7 @@ class QualityRefiner {
         continue;
       }
       if (triangles_.empty()) break;
-      const TriangleId t = triangles_.pop(cdt_);
+      const CdtTriangleId t = triangles_.pop(cdt_);
       if (t == none || badness(t) <= 0.0) continue;
       refine(t);
       if ((stats_.inserted & 0x3fff) == 0) report(progress, "quality refinement", stats_.inserted, options_.max_steiner);
@@ -89,75 +89,75 @@ class QualityRefiner {
 
   double projected_fraction(std::uint32_t s, const Point2& p) const {
     const Point2 a = end_a(s), b = end_b(s);
-    const double l2 = dot(a, b, b);
-    return l2 > 0.0 ? std::clamp(dot(a, p, b) / l2, 0.0, 1.0) : 0.0;
+    const double l2 = dot_about(a, b, b);
+    return l2 > 0.0 ? std::clamp(dot_about(a, p, b) / l2, 0.0, 1.0) : 0.0;
   }
 
-  bool is_input(VertexId v) const { return v < options_.input_vertices; }
+  bool is_input(CdtVertexId v) const { return v < options_.input_vertices; }
 
   // The fraction of vertex v along input segment s (its ends: 0 and 1).
-  double fraction(VertexId v, std::uint32_t s) const {
+  double fraction(CdtVertexId v, std::uint32_t s) const {
     if (v == segment(s).a) return 0.0;
     if (v == segment(s).b) return 1.0;
     return places_[v].fraction;
   }
 
-  bool is_subsegment(VertexId u, VertexId w) const { return index_of_.count(edge_key(u, w)) != 0; }
+  bool is_subsegment(CdtVertexId u, CdtVertexId w) const { return index_of_.count(cdt_edge_key(u, w)) != 0; }
 
-  bool is_inside(TriangleId t) const { return t != none && cdt_.is_live(t) && labels_[t] >= 0; }
+  bool is_inside(CdtTriangleId t) const { return t != none && cdt_.is_live(t) && labels_[t] >= 0; }
 
   // The apex of the live inside triangle left of u -> w, or none.
-  VertexId inside_apex(VertexId u, VertexId w) const {
-    const TriangleId t = cdt_.triangle_left_of(u, w);
+  CdtVertexId inside_apex(CdtVertexId u, CdtVertexId w) const {
+    const CdtTriangleId t = cdt_.triangle_left_of(u, w);
     if (!is_inside(t)) return none;
     const auto v = cdt_.vertices(t);
-    for (const VertexId x : v)
+    for (const CdtVertexId x : v)
       if (x != u && x != w) return x;
     return none;
   }
 
-  bool encroached(VertexId u, VertexId w) const {
-    if (refused_.count(edge_key(u, w))) return false;
-    for (const VertexId apex : {inside_apex(u, w), inside_apex(w, u)})
+  bool encroached(CdtVertexId u, CdtVertexId w) const {
+    if (refused_.count(cdt_edge_key(u, w))) return false;
+    for (const CdtVertexId apex : {inside_apex(u, w), inside_apex(w, u)})
       if (apex != none && in_diametral_circle(cdt_.point(u), cdt_.point(w), cdt_.point(apex))) return true;
     return false;
   }
 
-  void check_encroached(VertexId u, VertexId w) {
+  void check_encroached(CdtVertexId u, CdtVertexId w) {
     if (encroached(u, w)) encroached_.push_back({u, w, false});
   }
 
   // The exemption of the header, on this refinement's own record of which segment each
   // Steiner point was put on.
-  bool exempt(const std::array<VertexId, 3>& v, const Corners& c) const {
+  bool exempt(const std::array<CdtVertexId, 3>& v, const Corners& c) const {
     int shortest = 0;
     for (int i = 1; i < 3; ++i)
       if (c.side(i) < c.side(shortest)) shortest = i;
-    const VertexId u = v[static_cast<std::size_t>((shortest + 1) % 3)], w = v[static_cast<std::size_t>((shortest + 2) % 3)];
+    const CdtVertexId u = v[static_cast<std::size_t>((shortest + 1) % 3)], w = v[static_cast<std::size_t>((shortest + 2) % 3)];
     if (is_input(u) || is_input(w)) return false;
     const std::uint32_t su = places_[u].segment, sw = places_[w].segment;
     if (su == none || sw == none || su == sw) return false;
-    VertexId z = none;
-    for (const VertexId e : {segment(su).a, segment(su).b})
+    CdtVertexId z = none;
+    for (const CdtVertexId e : {segment(su).a, segment(su).b})
       if (e == segment(sw).a || e == segment(sw).b) z = e;
     if (z == none) return false;
     const Point2 pz = cdt_.point(z);
     const Point2 far_u = segment(su).a == z ? end_b(su) : end_a(su);
     const Point2 far_w = segment(sw).a == z ? end_b(sw) : end_a(sw);
     if (smallest_angle_at(pz, far_u, far_w) >= 60.0) return false;
-    const double du = dot(pz, cdt_.point(u), cdt_.point(u)), dw = dot(pz, cdt_.point(w), cdt_.point(w));
+    const double du = dot_about(pz, cdt_.point(u), cdt_.point(u)), dw = dot_about(pz, cdt_.point(w), cdt_.point(w));
     return du < 1.001 * dw && dw < 1.001 * du;
   }
 
   static double smallest_angle_at(const Point2& o, const Point2& a, const Point2& b) {
     const double cross = (a.x - o.x) * (b.y - o.y) - (a.y - o.y) * (b.x - o.x);
-    return std::atan2(std::fabs(cross), dot(o, a, b)) / degree;
+    return std::atan2(std::fabs(cross), dot_about(o, a, b)) / degree;
   }
 
   double size_at(const Point2& p) const { return options_.size.automatic() ? 0.0 : options_.size.at(p); }
 
   // 0 when t is fine; too big ones first (> 2), then skinny ones, the smallest angle first.
-  double badness(TriangleId t) const {
+  double badness(CdtTriangleId t) const {
     if (!is_inside(t)) return 0.0;
     const Corners c(cdt_, t);
     const double h = size_at(c.centroid());
@@ -168,7 +168,7 @@ class QualityRefiner {
     return 1.0 + (min_angle_ - angle) / min_angle_;
   }
 
-  void consider(TriangleId t) {
+  void consider(CdtTriangleId t) {
     const double b = badness(t);
     if (b > 0.0) triangles_.push(cdt_, t, b);
   }
@@ -179,7 +179,7 @@ class QualityRefiner {
   }
 
   // Splits bad triangle t at its circumcentre, or the subsegments that keep it out.
-  void refine(TriangleId t) {
+  void refine(CdtTriangleId t) {
     if (at_cap()) return;
     const Corners c(cdt_, t);
     const Point2 centre = circumcentre(c[0], c[1], c[2]);
@@ -188,8 +188,8 @@ class QualityRefiner {
     if (end.holder == none) {
       if (end.before == none) return;  // blocked by a vertex on the way: leave t
       const auto v = cdt_.vertices(end.before);
-      const VertexId u = v[static_cast<std::size_t>((end.edge + 1) % 3)], w = v[static_cast<std::size_t>((end.edge + 2) % 3)];
-      if (is_subsegment(u, w) && !refused_.count(edge_key(u, w))) {
+      const CdtVertexId u = v[static_cast<std::size_t>((end.edge + 1) % 3)], w = v[static_cast<std::size_t>((end.edge + 2) % 3)];
+      if (is_subsegment(u, w) && !refused_.count(cdt_edge_key(u, w))) {
         split(u, w);
         consider(t);
       }
@@ -198,7 +198,7 @@ class QualityRefiner {
     if (labels_[end.holder] != labels_[t]) return;
     bool rejected = false;
     for (const auto& [u, w] : cavity_subsegments(end.holder, centre)) {
-      if (refused_.count(edge_key(u, w)) || !in_diametral_circle(cdt_.point(u), cdt_.point(w), centre)) continue;
+      if (refused_.count(cdt_edge_key(u, w)) || !in_diametral_circle(cdt_.point(u), cdt_.point(w), centre)) continue;
       encroached_.push_back({u, w, true});
       rejected = true;
     }
@@ -207,34 +207,34 @@ class QualityRefiner {
       return;
     }
     const int label = labels_[t];
-    const VertexId v = cdt_.insert_point(centre, end.holder);
+    const CdtVertexId v = cdt_.insert_point(centre, end.holder);
     if (v == none) return;
     ++stats_.inserted;
     ++stats_.circumcentres;
     places_.resize(cdt_.vertex_count());
     labels_.resize(cdt_.triangle_slot_count(), -1);
-    for (const TriangleId s : star(v)) labels_[s] = label;
+    for (const CdtTriangleId s : star(v)) labels_[s] = label;
     after_insertion(v);
   }
 
   // The subsegments on the boundary of p's cavity (the triangles whose circumcircle holds p,
   // reachable from `holder` without crossing a constrained edge): those p could encroach.
-  std::vector<std::array<VertexId, 2>> cavity_subsegments(TriangleId holder, const Point2& p) {
-    std::vector<std::array<VertexId, 2>> out;
+  std::vector<std::array<CdtVertexId, 2>> cavity_subsegments(CdtTriangleId holder, const Point2& p) {
+    std::vector<std::array<CdtVertexId, 2>> out;
     visited_.clear();
-    std::vector<TriangleId> stack{holder};
+    std::vector<CdtTriangleId> stack{holder};
     visited_.push_back(holder);
     while (!stack.empty()) {
-      const TriangleId t = stack.back();
+      const CdtTriangleId t = stack.back();
       stack.pop_back();
       const auto v = cdt_.vertices(t);
       for (int i = 0; i < 3; ++i) {
-        const VertexId u = v[static_cast<std::size_t>((i + 1) % 3)], w = v[static_cast<std::size_t>((i + 2) % 3)];
+        const CdtVertexId u = v[static_cast<std::size_t>((i + 1) % 3)], w = v[static_cast<std::size_t>((i + 2) % 3)];
         if (cdt_.is_constrained(t, i)) {
           if (is_subsegment(u, w)) out.push_back({u, w});
           continue;
         }
-        const TriangleId n = cdt_.neighbour(t, i);
+        const CdtTriangleId n = cdt_.neighbour(t, i);
         if (n == none || std::find(visited_.begin(), visited_.end(), n) != visited_.end()) continue;
         const Corners cn(cdt_, n);
         if (predicates::incircle(cn[0], cn[1], cn[2], p) != predicates::Sign::positive) continue;
@@ -247,7 +247,7 @@ class QualityRefiner {
 
   // The fraction along input segment s where subsegment (u, w) is split: concentric shells
   // when exactly one end is an input vertex, else the middle.
-  double split_fraction(VertexId u, VertexId w, std::uint32_t s) const {
+  double split_fraction(CdtVertexId u, CdtVertexId w, std::uint32_t s) const {
     const double fu = fraction(u, s), fw = fraction(w, s);
     if (is_input(u) == is_input(w)) return fu + (fw - fu) / 2;
     const double length = distance(end_a(s), end_b(s));
@@ -264,14 +264,14 @@ class QualityRefiner {
   // fractions moved along the segment by (fw - fu) 2^-k, k = 44 ... 14 (the rounding moves
   // with them; the shell radius by at most 2^-14 of the piece), each side. The vertex made and
   // its fraction, or none.
-  std::pair<VertexId, double> split_point(VertexId u, VertexId w, std::uint32_t s) {
+  std::pair<CdtVertexId, double> split_point(CdtVertexId u, CdtVertexId w, std::uint32_t s) {
     const double fu = fraction(u, s), fw = fraction(w, s);
     const double f0 = split_fraction(u, w, s);
     for (int k = 45; k >= 14; --k) {
       for (const double sign : {1.0, -1.0}) {
         const double f = k == 45 ? f0 : f0 + sign * std::ldexp(fw - fu, -k);
         if ((f - fu) * (fw - f) <= 0.0) continue;
-        const VertexId v = cdt_.split_constraint(u, w, detail::point_on_segment(end_a(s), end_b(s), f));
+        const CdtVertexId v = cdt_.split_constraint(u, w, detail::point_on_segment(end_a(s), end_b(s), f));
         if (v != none) return {v, f};
         if (k == 45) break;
       }
@@ -279,9 +279,9 @@ class QualityRefiner {
     return {none, 0.0};
   }
 
-  void split(VertexId u, VertexId w) {
+  void split(CdtVertexId u, CdtVertexId w) {
     if (at_cap()) return;
-    const auto found = index_of_.find(edge_key(u, w));
+    const auto found = index_of_.find(cdt_edge_key(u, w));
     if (found == index_of_.end()) return;
     const std::uint32_t index = found->second;
     const std::uint32_t s = subsegments_[index].segment;
@@ -294,7 +294,7 @@ class QualityRefiner {
     }
     if (v == none) {
       ++stats_.refused_splits;
-      refused_.insert(edge_key(u, w));
+      refused_.insert(cdt_edge_key(u, w));
       return;
     }
     ++stats_.inserted;
@@ -303,30 +303,30 @@ class QualityRefiner {
     places_[v] = {s, f};
     index_of_.erase(found);
     subsegments_[index] = {u, v, s};
-    index_of_.emplace(edge_key(u, v), index);
-    index_of_.emplace(edge_key(v, w), static_cast<std::uint32_t>(subsegments_.size()));
+    index_of_.emplace(cdt_edge_key(u, v), index);
+    index_of_.emplace(cdt_edge_key(v, w), static_cast<std::uint32_t>(subsegments_.size()));
     subsegments_.push_back({v, w, s});
     after_insertion(v);
     check_encroached(u, v);
     check_encroached(v, w);
   }
 
-  int label_left_of(VertexId u, VertexId w) const {
-    const TriangleId t = cdt_.triangle_left_of(u, w);
+  int label_left_of(CdtVertexId u, CdtVertexId w) const {
+    const CdtTriangleId t = cdt_.triangle_left_of(u, w);
     return t != none && cdt_.is_live(t) ? labels_[t] : -1;
   }
 
   // Labels the live triangles around v counterclockwise from the edge (v, from) to the edge
   // (v, to), both constrained: from both ends, as a hull gap may cut the sweep.
-  void label_sector(VertexId v, VertexId from, VertexId to, int label) {
-    for (TriangleId t = cdt_.triangle_left_of(v, from); t != none;) {
+  void label_sector(CdtVertexId v, CdtVertexId from, CdtVertexId to, int label) {
+    for (CdtTriangleId t = cdt_.triangle_left_of(v, from); t != none;) {
       labels_[t] = label;
       const auto c = cdt_.vertices(t);
       const int k = c[0] == v ? 0 : (c[1] == v ? 1 : 2);
       if (c[static_cast<std::size_t>((k + 2) % 3)] == to) break;
       t = cdt_.neighbour(t, (k + 1) % 3);
     }
-    for (TriangleId t = cdt_.triangle_left_of(to, v); t != none;) {
+    for (CdtTriangleId t = cdt_.triangle_left_of(to, v); t != none;) {
       labels_[t] = label;
       const auto c = cdt_.vertices(t);
       const int k = c[0] == v ? 0 : (c[1] == v ? 1 : 2);
@@ -336,11 +336,11 @@ class QualityRefiner {
   }
 
   // The live triangles around v (every triangle an insertion creates is one of them).
-  std::vector<TriangleId> star(VertexId v) const {
-    std::vector<TriangleId> out;
-    const TriangleId first = cdt_.incident_triangle(v);
+  std::vector<CdtTriangleId> star(CdtVertexId v) const {
+    std::vector<CdtTriangleId> out;
+    const CdtTriangleId first = cdt_.incident_triangle(v);
     for (int direction = 1; direction <= 2 && first != none; ++direction) {
-      TriangleId t = first;
+      CdtTriangleId t = first;
       do {
         if (direction == 1 || t != first) out.push_back(t);
         const auto c = cdt_.vertices(t);
@@ -353,19 +353,19 @@ class QualityRefiner {
   }
 
   // New triangles are considered; the subsegments opposite v are checked against v.
-  void after_insertion(VertexId v) {
-    for (const TriangleId t : star(v)) {
+  void after_insertion(CdtVertexId v) {
+    for (const CdtTriangleId t : star(v)) {
       consider(t);
       const auto c = cdt_.vertices(t);
       const int k = c[0] == v ? 0 : (c[1] == v ? 1 : 2);
-      const VertexId a = c[static_cast<std::size_t>((k + 1) % 3)], b = c[static_cast<std::size_t>((k + 2) % 3)];
+      const CdtVertexId a = c[static_cast<std::size_t>((k + 1) % 3)], b = c[static_cast<std::size_t>((k + 2) % 3)];
       if (cdt_.is_constrained(t, k) && is_subsegment(a, b)) check_encroached(a, b);
     }
   }
 
   void final_statistics() {
     bool first = true, first_exempt = true;
-    for (TriangleId t = 0; t < cdt_.triangle_slot_count(); ++t) {
+    for (CdtTriangleId t = 0; t < cdt_.triangle_slot_count(); ++t) {
       if (!is_inside(t)) continue;
       const Corners c(cdt_, t);
       const double angle = smallest_angle_degrees(c[0], c[1], c[2]);
@@ -390,12 +390,12 @@ class QualityRefiner {
   std::unordered_map<std::uint64_t, std::uint32_t> index_of_;  // subsegment -> index (lookups only)
   std::unordered_set<std::uint64_t> refused_;         // subsegments that cannot be split
   struct Encroached {
-    VertexId u, w;
+    CdtVertexId u, w;
     bool by_circumcentre;  // a rejected circumcentre: split even if no vertex encroaches it
   };
   std::deque<Encroached> encroached_;
   detail::WorstFirstQueue triangles_;
-  std::vector<TriangleId> visited_;
+  std::vector<CdtTriangleId> visited_;
   QualityRefinementStats stats_;
 };
 
@@ -407,7 +407,7 @@ double smallest_angle_degrees(const Point2& a, const Point2& b, const Point2& c)
   for (int i = 0; i < 3; ++i) {
     const Point2 &o = p[i], &u = p[(i + 1) % 3], &w = p[(i + 2) % 3];
     const double cross = (u.x - o.x) * (w.y - o.y) - (u.y - o.y) * (w.x - o.x);
-    smallest = std::min(smallest, std::atan2(std::fabs(cross), dot(o, u, w)) / degree);
+    smallest = std::min(smallest, std::atan2(std::fabs(cross), dot_about(o, u, w)) / degree);
   }
   return smallest;
 }

@@ -25,12 +25,12 @@ std::array<std::uint32_t, 3> sorted_face(const std::uint32_t* c, int face) {
   return f;
 }
 
-std::uint64_t edge_key(std::uint32_t a, std::uint32_t b) {
+std::uint64_t refinement_edge_key(std::uint32_t a, std::uint32_t b) {
   if (a > b) std::swap(a, b);
   return (std::uint64_t{a} << 32) | b;
 }
 
-double squared_distance(const Point3& a, const Point3& b) {
+double squared_distance_3(const Point3& a, const Point3& b) {
   const double dx = a.x - b.x, dy = a.y - b.y, dz = a.z - b.z;
   return dx * dx + dy * dy + dz * dz;
 }
@@ -162,7 +162,7 @@ bool RefinementMesh3::grow_cavity(const Point3& p, std::uint32_t seed, double mi
     const std::uint32_t t = cavity_[k];
     const std::uint32_t* c = corners(t);
     for (int i = 0; i < 4; ++i) {
-      if (squared_distance(points_[c[i]], p) < clearance) return false;
+      if (squared_distance_3(points_[c[i]], p) < clearance) return false;
       if (is_constraint(t, i) && encroaches({t, i}, p, ball_factor)) return false;
     }
     for (int i = 0; i < 4; ++i) {
@@ -300,7 +300,7 @@ void RefinementMesh3::fill(const Point3& p) {
       std::uint32_t e[2];
       for (int k = 0, m = 0; k < 4; ++k)
         if (k != j && k != n.face) e[m++] = n.corner[static_cast<std::size_t>(k)];
-      side_faces_.push_back({edge_key(e[0], e[1]), 4 * t + static_cast<std::uint32_t>(j)});
+      side_faces_.push_back({refinement_edge_key(e[0], e[1]), 4 * t + static_cast<std::uint32_t>(j)});
     }
   }
   live_count_ += pending_.size();

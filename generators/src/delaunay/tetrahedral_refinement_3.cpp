@@ -21,8 +21,8 @@ Point3 minus(const Point3& a, const Point3& b) { return {a.x - b.x, a.y - b.y, a
 Point3 cross(const Point3& a, const Point3& b) {
   return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x};
 }
-double dot(const Point3& a, const Point3& b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
-double length(const Point3& a) { return std::sqrt(dot(a, a)); }
+double dot3(const Point3& a, const Point3& b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
+double length(const Point3& a) { return std::sqrt(dot3(a, a)); }
 
 // What refinement needs of one tetrahedron, in double (sizes decide nothing exact).
 struct Shape {
@@ -40,7 +40,7 @@ Shape shape_of(const RefinementMesh3& mesh, std::uint32_t t) {
   for (int i = 0; i < 4; ++i)
     for (int j = i + 1; j < 4; ++j) {
       const Point3 e = minus(*p[i], *p[j]);
-      const double l = dot(e, e);
+      const double l = dot3(e, e);
       shortest = std::min(shortest, l);
       longest = std::max(longest, l);
     }
@@ -50,9 +50,9 @@ Shape shape_of(const RefinementMesh3& mesh, std::uint32_t t) {
                 (p[0]->z + p[1]->z + p[2]->z + p[3]->z) / 4};
   const Point3 u = minus(*p[1], *p[0]), v = minus(*p[2], *p[0]), w = minus(*p[3], *p[0]);
   const Point3 vw = cross(v, w), wu = cross(w, u), uv = cross(u, v);
-  const double den = 2.0 * dot(u, vw);
+  const double den = 2.0 * dot3(u, vw);
   if (den != 0.0) {
-    const double uu = dot(u, u), vv = dot(v, v), ww = dot(w, w);
+    const double uu = dot3(u, u), vv = dot3(v, v), ww = dot3(w, w);
     const Point3 r{(uu * vw.x + vv * wu.x + ww * uv.x) / den, (uu * vw.y + vv * wu.y + ww * uv.y) / den,
                    (uu * vw.z + vv * wu.z + ww * uv.z) / den};
     const double radius = length(r);
@@ -68,7 +68,7 @@ double volume(const RefinementMesh3& mesh, std::uint32_t t) {
   const std::uint32_t* c = mesh.corners(t);
   const Point3 u = minus(mesh.point(c[1]), mesh.point(c[0])), v = minus(mesh.point(c[2]), mesh.point(c[0])),
                w = minus(mesh.point(c[3]), mesh.point(c[0]));
-  return std::abs(dot(u, cross(v, w))) / 6.0;
+  return std::abs(dot3(u, cross(v, w))) / 6.0;
 }
 
 class Refinement {

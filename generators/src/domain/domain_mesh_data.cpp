@@ -15,11 +15,11 @@ namespace certimesh::generators {
 
 namespace {
 
-[[noreturn]] void refuse(DomainProblemKind kind, std::string message, std::vector<std::uint32_t> segments = {}) {
+[[noreturn]] void refuse_domain(DomainProblemKind kind, std::string message, std::vector<std::uint32_t> segments = {}) {
   throw InvalidDomain({DomainProblem{kind, std::move(segments), {}, std::move(message)}});
 }
 
-std::vector<Point2> points_of(const std::vector<double>& xy) {
+std::vector<Point2> points_of_xy(const std::vector<double>& xy) {
   std::vector<Point2> points(xy.size() / 2);
   for (std::size_t i = 0; i < points.size(); ++i) points[i] = {xy[2 * i], xy[2 * i + 1]};
   return points;
@@ -35,7 +35,7 @@ bool integral_label(double attribute) {
 }
 
 std::vector<RegionSeed> regions_of(const io::MeshData& data) {
-  const std::vector<Point2> seeds = points_of(data.region_points);
+  const std::vector<Point2> seeds = points_of_xy(data.region_points);
   std::vector<RegionSeed> regions(seeds.size());
   bool all_integral = true;
   for (std::size_t r = 0; r < seeds.size(); ++r) {
@@ -43,7 +43,7 @@ std::vector<RegionSeed> regions_of(const io::MeshData& data) {
     if (!std::isfinite(attribute)) {
       std::string shown;
       io::append_double(shown, attribute);
-      refuse(DomainProblemKind::bad_region_attribute,
+      refuse_domain(DomainProblemKind::bad_region_attribute,
              "region point " + std::to_string(r) + " has attribute " + shown + ", which is not a finite number");
     }
     all_integral = all_integral && integral_label(attribute);
@@ -60,14 +60,14 @@ std::vector<RegionSeed> regions_of(const io::MeshData& data) {
 
 PlanarDomain planar_domain_from_mesh_data(const io::MeshData& data) {
   if (data.dimension != 2) {
-    refuse(DomainProblemKind::wrong_dimension,
+    refuse_domain(DomainProblemKind::wrong_dimension,
            "a planar domain needs 2D points, the file has dimension " + std::to_string(data.dimension));
   }
   if (data.segment_count() == 0) {
-    refuse(DomainProblemKind::no_segments, "the file has no segments: nothing bounds a region");
+    refuse_domain(DomainProblemKind::no_segments, "the file has no segments: nothing bounds a region");
   }
   PlanarDomain domain;
-  domain.points = points_of(data.coordinates);
+  domain.points = points_of_xy(data.coordinates);
   if (data.point_labels.size() == domain.points.size()) domain.point_labels = data.point_labels;
   const std::size_t n = domain.points.size();
   for (std::uint32_t s = 0; s < data.segment_count(); ++s) {
@@ -75,7 +75,7 @@ PlanarDomain planar_domain_from_mesh_data(const io::MeshData& data) {
     const io::Index b = data.segments[2 * s + 1];
     for (const io::Index v : {a, b}) {
       if (v >= n) {
-        refuse(DomainProblemKind::vertex_index_out_of_range,
+        refuse_domain(DomainProblemKind::vertex_index_out_of_range,
                "segment " + std::to_string(s) + " names vertex " + std::to_string(v) +
                    " (0-based), but the file has only " + std::to_string(n) + " points",
                {s});
@@ -84,7 +84,7 @@ PlanarDomain planar_domain_from_mesh_data(const io::MeshData& data) {
     const io::Label label = s < data.segment_labels.size() ? data.segment_labels[s] : 0;
     domain.segments.push_back({a, b, label});
   }
-  domain.holes = points_of(data.holes);
+  domain.holes = points_of_xy(data.holes);
   domain.regions = regions_of(data);
   return domain;
 }

@@ -182,7 +182,7 @@ std::vector<bool> on_some_segment(const PlanarDomain& d) {
 
 // ---- the geometric pair checks ------------------------------------------------------------
 
-struct Box {
+struct SegmentBox {
   double xmin, xmax, ymin, ymax;
   std::uint32_t segment;  // kIsolated for the box of an isolated vertex
   std::uint32_t vertex = 0;
@@ -271,8 +271,8 @@ void classify_pair(const PlanarDomain& d, std::uint32_t s, std::uint32_t t, Prob
   classify_disjoint_ids(d, s, t, out);
 }
 
-std::vector<Box> usable_segment_boxes(const PlanarDomain& d) {
-  std::vector<Box> boxes;
+std::vector<SegmentBox> usable_segment_boxes(const PlanarDomain& d) {
+  std::vector<SegmentBox> boxes;
   boxes.reserve(d.segments.size());
   for (std::uint32_t s = 0; s < d.segments.size(); ++s) {
     const DomainSegment& seg = d.segments[s];
@@ -302,7 +302,7 @@ void classify_isolated(const PlanarDomain& d, std::uint32_t s, DomainVertex v, P
               segment_text(d, s));
 }
 
-void classify_boxes(const PlanarDomain& d, const Box& p, const Box& q, ProblemList& out) {
+void classify_boxes(const PlanarDomain& d, const SegmentBox& p, const SegmentBox& q, ProblemList& out) {
   if (p.segment == kIsolated && q.segment == kIsolated) return;  // two points: duplicates, reported
   if (p.segment == kIsolated) return classify_isolated(d, q.segment, p.vertex, out);
   if (q.segment == kIsolated) return classify_isolated(d, p.segment, q.vertex, out);
@@ -311,14 +311,14 @@ void classify_boxes(const PlanarDomain& d, const Box& p, const Box& q, ProblemLi
 
 // Sweep along x over boxes sorted by xmin: every pair whose closed boxes meet is examined once.
 void check_segment_pairs(const PlanarDomain& d, ProblemList& out) {
-  std::vector<Box> boxes = usable_segment_boxes(d);
-  std::sort(boxes.begin(), boxes.end(), [](const Box& p, const Box& q) {
+  std::vector<SegmentBox> boxes = usable_segment_boxes(d);
+  std::sort(boxes.begin(), boxes.end(), [](const SegmentBox& p, const SegmentBox& q) {
     return std::tie(p.xmin, p.segment, p.vertex) < std::tie(q.xmin, q.segment, q.vertex);
   });
   for (std::size_t i = 0; i < boxes.size() && !out.full(); ++i) {
-    const Box& bi = boxes[i];
+    const SegmentBox& bi = boxes[i];
     for (std::size_t j = i + 1; j < boxes.size() && boxes[j].xmin <= bi.xmax && !out.full(); ++j) {
-      const Box& bj = boxes[j];
+      const SegmentBox& bj = boxes[j];
       if (bj.ymin > bi.ymax || bi.ymin > bj.ymax) continue;
       classify_boxes(d, bi, bj, out);
     }

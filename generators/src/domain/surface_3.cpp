@@ -19,12 +19,12 @@ using predicates::Point2;
 using predicates::Point3;
 using predicates::Sign;
 
-[[noreturn]] void refuse(SurfaceProblemKind kind, std::string message, std::vector<std::uint32_t> triangles = {},
+[[noreturn]] void refuse_surface(SurfaceProblemKind kind, std::string message, std::vector<std::uint32_t> triangles = {},
                          std::vector<std::uint32_t> vertices = {}) {
   throw InvalidSurface({SurfaceProblem{kind, std::move(triangles), std::move(vertices), std::move(message)}});
 }
 
-Point2 drop(const Point3& p, int axis) {
+Point2 drop_coordinate(const Point3& p, int axis) {
   if (axis == 0) return {p.y, p.z};
   if (axis == 1) return {p.z, p.x};
   return {p.x, p.y};
@@ -34,7 +34,7 @@ Point2 drop(const Point3& p, int axis) {
 // three points are collinear in space iff all three coordinate projections are).
 int projection_axis(const Point3& a, const Point3& b, const Point3& c) {
   for (int axis = 0; axis < 3; ++axis)
-    if (predicates::orient2d(drop(a, axis), drop(b, axis), drop(c, axis)) != Sign::zero) return axis;
+    if (predicates::orient2d(drop_coordinate(a, axis), drop_coordinate(b, axis), drop_coordinate(c, axis)) != Sign::zero) return axis;
   return -1;
 }
 
@@ -50,14 +50,14 @@ class PolygonFacetCutter {
 
   std::vector<std::array<std::uint32_t, 3>> cut() {
     check_planar();
-    for (std::size_t i = 0; i < k(); ++i) flat_.push_back(drop(at(i), axis_));
+    for (std::size_t i = 0; i < k(); ++i) flat_.push_back(drop_coordinate(at(i), axis_));
     check_simple();
     return clip();
   }
 
  private:
   [[noreturn]] void bad(const std::string& why) const {
-    refuse(SurfaceProblemKind::bad_facet, "facet " + std::to_string(facet_) + " " + why);
+    refuse_surface(SurfaceProblemKind::bad_facet, "facet " + std::to_string(facet_) + " " + why);
   }
   const Point3& at(std::size_t i) const { return points_[corners_[i]]; }
   std::size_t k() const { return corners_.size(); }
@@ -141,13 +141,13 @@ void add_facets(const io::MeshData& data, Surface3& s) {
   for (std::size_t i = 0; i < f.facet_count(); ++i) {
     const std::uint64_t p = f.polygon_begin(i);
     const std::string name = "facet " + std::to_string(i);
-    if (f.hole_end[i] != f.hole_begin(i)) refuse(SurfaceProblemKind::bad_facet, name + " has facet holes (not supported yet)");
+    if (f.hole_end[i] != f.hole_begin(i)) refuse_surface(SurfaceProblemKind::bad_facet, name + " has facet holes (not supported yet)");
     if (f.facet_end[i] != p + 1)
-      refuse(SurfaceProblemKind::bad_facet, name + " has " + std::to_string(f.facet_end[i] - p) + " polygons (only one-polygon facets are supported yet)");
+      refuse_surface(SurfaceProblemKind::bad_facet, name + " has " + std::to_string(f.facet_end[i] - p) + " polygons (only one-polygon facets are supported yet)");
     std::vector<std::uint32_t> corners(f.corners.begin() + static_cast<std::ptrdiff_t>(f.corner_begin(p)), f.corners.begin() + static_cast<std::ptrdiff_t>(f.polygon_end[p]));
     for (const std::uint32_t c : corners)
-      if (c >= s.points.size()) refuse(SurfaceProblemKind::vertex_index_out_of_range, name + " names vertex " + std::to_string(c) + ", which does not exist");
-    if (corners.size() < 3) refuse(SurfaceProblemKind::bad_facet, name + " has " + std::to_string(corners.size()) + " corners (a facet needs 3 at least)");
+      if (c >= s.points.size()) refuse_surface(SurfaceProblemKind::vertex_index_out_of_range, name + " names vertex " + std::to_string(c) + ", which does not exist");
+    if (corners.size() < 3) refuse_surface(SurfaceProblemKind::bad_facet, name + " has " + std::to_string(corners.size()) + " corners (a facet needs 3 at least)");
     std::vector<std::array<std::uint32_t, 3>> cut;
     if (corners.size() == 3) {
       cut.push_back({corners[0], corners[1], corners[2]});  // a degenerate one is the validation's to name
@@ -162,7 +162,7 @@ void add_facets(const io::MeshData& data, Surface3& s) {
   }
 }
 
-std::vector<Point3> points_of(const std::vector<double>& xyz) {
+std::vector<Point3> points_of_xyz(const std::vector<double>& xyz) {
   std::vector<Point3> out(xyz.size() / 3);
   for (std::size_t i = 0; i < out.size(); ++i) out[i] = {xyz[3 * i], xyz[3 * i + 1], xyz[3 * i + 2]};
   return out;
@@ -193,24 +193,24 @@ std::string describe_triangle(const Surface3& s, std::uint32_t t) {
 }
 
 Surface3 surface_from_mesh_data(const io::MeshData& data, bool oriented) {
-  if (data.dimension != 3) refuse(SurfaceProblemKind::wrong_dimension, "the file is " + std::to_string(data.dimension) + "D: a surface has 3D points");
+  if (data.dimension != 3) refuse_surface(SurfaceProblemKind::wrong_dimension, "the file is " + std::to_string(data.dimension) + "D: a surface has 3D points");
   Surface3 s;
   s.oriented = oriented;
-  s.points = points_of(data.coordinates);
+  s.points = points_of_xyz(data.coordinates);
   for (const Point3& p : s.points)
-    if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z)) refuse(SurfaceProblemKind::non_finite_coordinate, "a point is not finite");
+    if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z)) refuse_surface(SurfaceProblemKind::non_finite_coordinate, "a point is not finite");
   if (!data.facets.empty()) add_facets(data, s);
   for (std::size_t t = 0; t < data.triangle_count(); ++t) {
     std::array<std::uint32_t, 3> tri{data.triangles[3 * t], data.triangles[3 * t + 1], data.triangles[3 * t + 2]};
     for (const std::uint32_t v : tri)
-      if (v >= s.points.size()) refuse(SurfaceProblemKind::vertex_index_out_of_range, "triangle " + std::to_string(t) + " names vertex " + std::to_string(v) + ", which does not exist");
+      if (v >= s.points.size()) refuse_surface(SurfaceProblemKind::vertex_index_out_of_range, "triangle " + std::to_string(t) + " names vertex " + std::to_string(v) + ", which does not exist");
     s.facet_of.push_back(static_cast<std::uint32_t>(s.triangles.size()));
     s.triangles.push_back(tri);
     s.labels.push_back(data.triangle_labels.empty() ? 0 : data.triangle_labels[t]);
   }
-  if (s.triangles.empty()) refuse(SurfaceProblemKind::no_triangles, "the file has no triangles or facets: nothing bounds a solid");
-  s.holes = points_of(data.holes);
-  s.region_points = points_of(data.region_points);
+  if (s.triangles.empty()) refuse_surface(SurfaceProblemKind::no_triangles, "the file has no triangles or facets: nothing bounds a solid");
+  s.holes = points_of_xyz(data.holes);
+  s.region_points = points_of_xyz(data.region_points);
   s.region_attributes = data.region_attributes;
   s.region_max_volumes = data.region_max_measures;
   return s;

@@ -28,17 +28,17 @@ int sgn(Sign s) { return static_cast<int>(s); }
 
 // The projection that drops coordinate `axis` (0: (y, z), 1: (z, x), 2: (x, y)); orient2d of a
 // triangle's projection is then the sign of that component of its normal (b - a) x (c - a).
-Point2 drop(const Point3& p, int axis) {
+Point2 without_coordinate(const Point3& p, int axis) {
   if (axis == 0) return {p.y, p.z};
   if (axis == 1) return {p.z, p.x};
   return {p.x, p.y};
 }
 
 int normal_sign(const Point3& a, const Point3& b, const Point3& c, int axis) {
-  return sgn(predicates::orient2d(drop(a, axis), drop(b, axis), drop(c, axis)));
+  return sgn(predicates::orient2d(without_coordinate(a, axis), without_coordinate(b, axis), without_coordinate(c, axis)));
 }
 
-bool collinear(const Point3& a, const Point3& b, const Point3& c) {
+bool collinear_by_projection(const Point3& a, const Point3& b, const Point3& c) {
   for (int axis = 0; axis < 3; ++axis)
     if (normal_sign(a, b, c, axis) != 0) return false;
   return true;
@@ -114,7 +114,7 @@ class Validator {
     for (std::uint32_t t = 0; t < s_.triangles.size(); ++t) {
       const Triangle& v = s_.triangles[t];
       const bool repeated = v[0] == v[1] || v[1] == v[2] || v[0] == v[2];
-      if (repeated || collinear(corner(t, 0), corner(t, 1), corner(t, 2)))
+      if (repeated || collinear_by_projection(corner(t, 0), corner(t, 1), corner(t, 2)))
         found.push_back({SurfaceProblemKind::degenerate_triangle, {t}, {v[0], v[1], v[2]},
                          describe_triangle(s_, t) + (repeated ? " repeats a corner" : " has zero area (its corners are collinear)")});
     }
@@ -414,9 +414,9 @@ class Validator {
   // Sign of orient2d, in the (y, z) projection, of (q, r) against the symbolic point
   // p' = a + e1 (b - a) + e2 (c - a) + (0, d, d^2), 1 >> e1 >> e2 >> d > 0.
   static int perturbed_orient_yz(const Point3& q, const Point3& r, const Point3& a, const Point3& b, const Point3& c) {
-    const Point2 Q = drop(q, 0), R = drop(r, 0);
+    const Point2 Q = without_coordinate(q, 0), R = without_coordinate(r, 0);
     for (const Point3* x : {&a, &b, &c})
-      if (const int s = sgn(predicates::orient2d(Q, R, drop(*x, 0)))) return s;
+      if (const int s = sgn(predicates::orient2d(Q, R, without_coordinate(*x, 0)))) return s;
     if (Q.y != R.y) return Q.y > R.y ? 1 : -1;  // the d term: (q_z - r_z) d
     return R.x > Q.x ? 1 : (R.x < Q.x ? -1 : 0);  // the d^2 term: (r_y - q_y) d^2
   }

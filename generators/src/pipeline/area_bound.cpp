@@ -15,9 +15,9 @@ namespace certimesh::generators::detail {
 namespace {
 
 using Triangle = std::array<std::uint32_t, 3>;
-constexpr std::uint32_t kNone = UINT32_MAX;
+constexpr std::uint32_t kNoTriangle = UINT32_MAX;
 
-std::uint64_t undirected(std::uint32_t a, std::uint32_t b) {
+std::uint64_t undirected_side_key(std::uint32_t a, std::uint32_t b) {
   if (a > b) std::swap(a, b);
   return (static_cast<std::uint64_t>(a) << 32) | b;
 }
@@ -36,7 +36,7 @@ class Bisection {
       : m_(m), boundary_(boundary), domain_(domain), max_area_(max_area) {
     for (std::uint32_t t = 0; t < m.triangles.size(); ++t) link(t);
     for (std::uint32_t s = 0; s < boundary.subsegments.size(); ++s)
-      subsegment_.emplace(undirected(boundary.subsegments[s].a, boundary.subsegments[s].b), s);
+      subsegment_.emplace(undirected_side_key(boundary.subsegments[s].a, boundary.subsegments[s].b), s);
   }
 
   std::uint64_t run() {
@@ -60,24 +60,24 @@ class Bisection {
     const Triangle& v = m_.triangles[t];
     return !area_within(m_.points[v[0]], m_.points[v[1]], m_.points[v[2]], max_area_[static_cast<std::size_t>(l)]);
   }
-  std::array<std::uint32_t, 2>& sides(std::uint64_t key) { return sides_.try_emplace(key, std::array{kNone, kNone}).first->second; }
+  std::array<std::uint32_t, 2>& sides(std::uint64_t key) { return sides_.try_emplace(key, std::array{kNoTriangle, kNoTriangle}).first->second; }
   void link(std::uint32_t t) {
     for (int i = 0; i < 3; ++i) {
-      auto& slot = sides(undirected(m_.triangles[t][static_cast<std::size_t>(i)], m_.triangles[t][static_cast<std::size_t>((i + 1) % 3)]));
-      if (slot[0] == kNone || slot[0] == t) slot[0] = t; else slot[1] = t;
+      auto& slot = sides(undirected_side_key(m_.triangles[t][static_cast<std::size_t>(i)], m_.triangles[t][static_cast<std::size_t>((i + 1) % 3)]));
+      if (slot[0] == kNoTriangle || slot[0] == t) slot[0] = t; else slot[1] = t;
     }
   }
   void unlink(std::uint32_t t) {
     for (int i = 0; i < 3; ++i) {
-      auto& slot = sides(undirected(m_.triangles[t][static_cast<std::size_t>(i)], m_.triangles[t][static_cast<std::size_t>((i + 1) % 3)]));
+      auto& slot = sides(undirected_side_key(m_.triangles[t][static_cast<std::size_t>(i)], m_.triangles[t][static_cast<std::size_t>((i + 1) % 3)]));
       if (slot[0] == t) slot[0] = slot[1];
-      slot[1] = kNone;
+      slot[1] = kNoTriangle;
     }
   }
   // The new point on edge (u, v): on its input segment for a boundary or cut edge.
   std::uint32_t new_point(std::uint32_t u, std::uint32_t v) {
     Point2 p{(m_.points[u].x + m_.points[v].x) / 2, (m_.points[u].y + m_.points[v].y) / 2};
-    const auto found = subsegment_.find(undirected(u, v));
+    const auto found = subsegment_.find(undirected_side_key(u, v));
     if (found != subsegment_.end()) {
       const DomainSegment& input = domain_.segments[boundary_.origin[found->second]];
       const Point2 a = domain_.points[input.a], b = domain_.points[input.b];
@@ -92,8 +92,8 @@ class Bisection {
       DomainSegment& s = boundary_.subsegments[first];
       const DomainSegment second{id, s.b, s.label};
       s.b = id;
-      subsegment_.emplace(undirected(s.a, s.b), first);
-      subsegment_.emplace(undirected(second.a, second.b), static_cast<std::uint32_t>(boundary_.subsegments.size()));
+      subsegment_.emplace(undirected_side_key(s.a, s.b), first);
+      subsegment_.emplace(undirected_side_key(second.a, second.b), static_cast<std::uint32_t>(boundary_.subsegments.size()));
       boundary_.origin.push_back(boundary_.origin[first]);
       boundary_.subsegments.push_back(second);
     }
@@ -124,11 +124,11 @@ class Bisection {
         longest = i;
     const std::uint32_t a = v[static_cast<std::size_t>(longest)], b = v[static_cast<std::size_t>((longest + 1) % 3)],
                         c = v[static_cast<std::size_t>((longest + 2) % 3)];
-    const auto& slot = sides_.at(undirected(a, b));
+    const auto& slot = sides_.at(undirected_side_key(a, b));
     const std::uint32_t across = slot[0] == t ? slot[1] : slot[0];
     const std::uint32_t p = new_point(a, b);
     std::vector<std::uint32_t> out = halve(t, a, b, c, p);
-    if (across != kNone) {
+    if (across != kNoTriangle) {
       const Triangle n = m_.triangles[across];
       int i = 0;
       while (!(n[static_cast<std::size_t>(i)] == b && n[static_cast<std::size_t>((i + 1) % 3)] == a)) ++i;

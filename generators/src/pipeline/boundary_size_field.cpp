@@ -13,14 +13,14 @@ namespace {
 
 constexpr double kInfinity = std::numeric_limits<double>::infinity();
 
-double distance(const Point2& p, const Point2& q) { return std::hypot(p.x - q.x, p.y - q.y); }
+double point_distance(const Point2& p, const Point2& q) { return std::hypot(p.x - q.x, p.y - q.y); }
 
 // Approximate distance from p to the segment ab (it steers sizes only).
 double distance_to_segment(const Point2& p, const Point2& a, const Point2& b) {
   const double ux = b.x - a.x, uy = b.y - a.y;
   const double length2 = ux * ux + uy * uy;
   const double t = length2 > 0.0 ? std::clamp(((p.x - a.x) * ux + (p.y - a.y) * uy) / length2, 0.0, 1.0) : 0.0;
-  return distance(p, Point2{a.x + t * ux, a.y + t * uy});
+  return point_distance(p, Point2{a.x + t * ux, a.y + t * uy});
 }
 
 }  // namespace
@@ -44,7 +44,7 @@ void BoundarySizeField2::measure_local_feature_sizes() {
       const Point2& p = cdt_.point(corner);
       const Point2& a = cdt_.point(v[static_cast<std::size_t>((i + 1) % 3)]);
       const Point2& b = cdt_.point(v[static_cast<std::size_t>((i + 2) % 3)]);
-      double nearest = std::min(distance(p, a), distance(p, b));
+      double nearest = std::min(point_distance(p, a), point_distance(p, b));
       if (cdt_.is_constrained(t, i)) nearest = std::min(nearest, distance_to_segment(p, a, b));
       lfs_[corner] = std::min(lfs_[corner], nearest);
     }
@@ -78,7 +78,7 @@ void BoundarySizeField2::propagate() {
     if (h > h_[u]) continue;
     for (std::uint32_t k = offset[u]; k < offset[u + 1]; ++k) {
       const std::uint32_t w = target[k];
-      const double through = h + grading_ * distance(cdt_.point(u), cdt_.point(w));
+      const double through = h + grading_ * point_distance(cdt_.point(u), cdt_.point(w));
       if (through < h_[w]) {
         h_[w] = through;
         queue.emplace(through, w);
@@ -98,7 +98,7 @@ double BoundarySizeField2::operator()(const Point2& p) const {
   if (t == ConstrainedDelaunay2::none) return smallest_;  // only more elements, never invalid
   hint_ = t;
   double h = maximum_;
-  for (const std::uint32_t v : cdt_.vertices(t)) h = std::min(h, h_[v] + grading_ * distance(p, cdt_.point(v)));
+  for (const std::uint32_t v : cdt_.vertices(t)) h = std::min(h, h_[v] + grading_ * point_distance(p, cdt_.point(v)));
   return h;
 }
 

@@ -14,12 +14,12 @@ namespace certimesh::generators::detail {
 
 namespace {
 
-std::uint64_t edge_key(std::uint32_t a, std::uint32_t b) {
+std::uint64_t triangulation_edge_key(std::uint32_t a, std::uint32_t b) {
   if (a > b) std::swap(a, b);
   return (static_cast<std::uint64_t>(a) << 32) | b;
 }
 
-std::string point_text(const Point2& p) {
+std::string point2_text(const Point2& p) {
   std::string s;
   io::append_double(s, p.x);
   s += ' ';
@@ -37,7 +37,7 @@ SideScan scan_sides(const ConstrainedDelaunay2& cdt, const std::vector<int>& lab
   std::unordered_map<std::uint64_t, std::uint32_t> segment_of;
   segment_of.reserve(domain.segments.size() * 2);
   for (std::uint32_t s = 0; s < domain.segments.size(); ++s) {
-    segment_of.emplace(edge_key(domain.segments[s].a, domain.segments[s].b), s);
+    segment_of.emplace(triangulation_edge_key(domain.segments[s].a, domain.segments[s].b), s);
   }
   SideScan scan;
   scan.inside_sides.assign(domain.segments.size(), 0);
@@ -49,7 +49,7 @@ SideScan scan_sides(const ConstrainedDelaunay2& cdt, const std::vector<int>& lab
       if (!cdt.is_constrained(t, i)) continue;
       const std::uint32_t p = v[static_cast<std::size_t>((i + 1) % 3)];
       const std::uint32_t q = v[static_cast<std::size_t>((i + 2) % 3)];
-      const auto found = segment_of.find(edge_key(p, q));
+      const auto found = segment_of.find(triangulation_edge_key(p, q));
       if (found == segment_of.end()) continue;  // cannot happen: every constraint is a segment
       const std::uint32_t s = found->second;
       const std::size_t side = domain.segments[s].a == p ? 0 : 1;  // t is left of p -> q
@@ -69,8 +69,8 @@ void refuse_open_boundary(const PlanarDomain& domain, const std::vector<std::uin
     p.kind = DomainProblemKind::open_boundary;
     p.segments = {original};
     p.vertices = {seg.a, seg.b};
-    p.message = "segment " + std::to_string(original) + " (" + point_text(domain.points[seg.a]) + ")-(" +
-                point_text(domain.points[seg.b]) +
+    p.message = "segment " + std::to_string(original) + " (" + point2_text(domain.points[seg.a]) + ")-(" +
+                point2_text(domain.points[seg.b]) +
                 ") has the domain on neither side: an open loop, or a segment outside the domain or in a hole";
     problems.push_back(std::move(p));
   }
@@ -91,7 +91,7 @@ std::string on_a_segment(const ConstrainedDelaunay2& cdt, std::uint32_t t, const
     const Point2& a = cdt.point(v[static_cast<std::size_t>((i + 1) % 3)]);
     const Point2& b = cdt.point(v[static_cast<std::size_t>((i + 2) % 3)]);
     if (cdt.is_constrained(t, i) && predicates::orient2d(a, b, p) == predicates::Sign::zero)
-      return "the segment (" + point_text(a) + ")-(" + point_text(b) + ")";
+      return "the segment (" + point2_text(a) + ")-(" + point2_text(b) + ")";
   }
   for (const std::uint32_t w : v)
     if (cdt.point(w) == p && w < on_segment.size() && on_segment[w]) return "vertex " + std::to_string(w) + " of a segment";
@@ -111,7 +111,7 @@ void refuse_holes_outside(const ConstrainedDelaunay2& cdt, const PlanarDomain& d
       if (const std::string on = on_a_segment(cdt, t, domain.holes[h], on_segment); !on.empty()) {
         DomainProblem p;
         p.kind = DomainProblemKind::hole_outside_domain;
-        p.message = "hole point " + std::to_string(h) + " (" + point_text(domain.holes[h]) + ") lies on " + on +
+        p.message = "hole point " + std::to_string(h) + " (" + point2_text(domain.holes[h]) + ") lies on " + on +
                     ": it does not say which face it empties";
         problems.push_back(std::move(p));
       }
@@ -119,7 +119,7 @@ void refuse_holes_outside(const ConstrainedDelaunay2& cdt, const PlanarDomain& d
     }
     DomainProblem p;
     p.kind = DomainProblemKind::hole_outside_domain;
-    p.message = "hole point " + std::to_string(h) + " (" + point_text(domain.holes[h]) +
+    p.message = "hole point " + std::to_string(h) + " (" + point2_text(domain.holes[h]) +
                 ") is outside every face the segments bound: it makes no hole";
     problems.push_back(std::move(p));
   }

@@ -10,7 +10,7 @@ namespace certimesh::generators::detail {
 namespace {
 
 constexpr int kRings = 2;              // neighbours of bad triangles the improvement may change
-constexpr std::uint32_t kNone = UINT32_MAX;
+constexpr std::uint32_t kNoLocalVertex = UINT32_MAX;
 // Algorithm 35's budget N1 per region triangle. Ideal-point smoothing has already done the
 // easy work; what is left stagnates quickly, and the default (5 per element) only spends
 // time on graded meshes whose triangles cannot all reach the target.
@@ -22,7 +22,7 @@ constexpr std::uint32_t kBasketSize = 256;  // Algorithm 35's N2
 constexpr std::uint64_t kStallFraction = 10;
 constexpr std::uint64_t kStallFloor = 1000;
 
-double shape_quality(const TriangleSoup& m, const std::array<std::uint32_t, 3>& t) {
+double soup_shape_quality(const TriangleSoup& m, const std::array<std::uint32_t, 3>& t) {
   const auto p = [&](int i) {
     const Point2& q = m.points[t[static_cast<std::size_t>(i)]];
     return topology::Point2d{q.x, q.y};
@@ -33,7 +33,7 @@ double shape_quality(const TriangleSoup& m, const std::array<std::uint32_t, 3>& 
 // Triangles below the target, grown by `kRings` rings of vertex neighbours.
 std::vector<std::uint8_t> select_region(const TriangleSoup& m, double target) {
   std::vector<std::uint8_t> in_region(m.triangles.size(), 0);
-  for (std::size_t t = 0; t < m.triangles.size(); ++t) in_region[t] = shape_quality(m, m.triangles[t]) < target;
+  for (std::size_t t = 0; t < m.triangles.size(); ++t) in_region[t] = soup_shape_quality(m, m.triangles[t]) < target;
   std::vector<std::uint8_t> marked_vertex(m.points.size(), 0);
   for (int ring = 0; ring < kRings; ++ring) {
     for (std::size_t t = 0; t < m.triangles.size(); ++t) {
@@ -56,7 +56,7 @@ RegionImprovementStats improve_bad_region(TriangleSoup& m, std::span<const Domai
   RegionImprovementStats stats;
   const std::vector<std::uint8_t> in_region = select_region(m, options.target_quality);
   // Copy the region into a mesh model; local vertex ids are assigned in first-use order.
-  std::vector<std::uint32_t> local_of(m.points.size(), kNone);
+  std::vector<std::uint32_t> local_of(m.points.size(), kNoLocalVertex);
   std::vector<std::uint32_t> global_of;
   topology::TriangleMesh2 region;
   TriangleSoup kept;  // the triangles outside the region, unchanged
@@ -69,7 +69,7 @@ RegionImprovementStats improve_bad_region(TriangleSoup& m, std::span<const Domai
     topology::TriangleMesh2::Element e;
     for (int i = 0; i < 3; ++i) {
       const std::uint32_t g = m.triangles[t][static_cast<std::size_t>(i)];
-      if (local_of[g] == kNone) {
+      if (local_of[g] == kNoLocalVertex) {
         local_of[g] = static_cast<std::uint32_t>(global_of.size());
         global_of.push_back(g);
         region.add_vertex({m.points[g].x, m.points[g].y});
@@ -81,7 +81,7 @@ RegionImprovementStats improve_bad_region(TriangleSoup& m, std::span<const Domai
   }
   if (stats.region_triangles == 0) return stats;
   for (const DomainSegment& s : constrained) {
-    if (local_of[s.a] != kNone && local_of[s.b] != kNone) {
+    if (local_of[s.a] != kNoLocalVertex && local_of[s.b] != kNoLocalVertex) {
       region.set_facet_label({topology::VertexId{local_of[s.a]}, topology::VertexId{local_of[s.b]}}, 1);
     }
   }
@@ -96,12 +96,12 @@ RegionImprovementStats improve_bad_region(TriangleSoup& m, std::span<const Domai
   }
   stats.improvement = improve_quality_2(region, bounded, progress);
   // Put it back: moved vertices get their new place, new vertices new global ids.
-  global_of.resize(region.vertex_slot_count(), kNone);
+  global_of.resize(region.vertex_slot_count(), kNoLocalVertex);
   for (std::uint32_t v = 0; v < region.vertex_slot_count(); ++v) {
     const topology::VertexId id{v};
     if (!region.is_live(id)) continue;
     const auto p = region.point(id);
-    if (global_of[v] == kNone) {
+    if (global_of[v] == kNoLocalVertex) {
       global_of[v] = static_cast<std::uint32_t>(m.points.size());
       m.points.push_back({p[0], p[1]});
     } else {

@@ -16,7 +16,7 @@ namespace {
 using predicates::Sign;
 using Triangle = std::array<std::uint32_t, 3>;
 
-std::uint64_t undirected(std::uint32_t a, std::uint32_t b) {
+std::uint64_t undirected_edge_key(std::uint32_t a, std::uint32_t b) {
   if (a > b) std::swap(a, b);
   return (static_cast<std::uint64_t>(a) << 32) | b;
 }
@@ -74,7 +74,7 @@ struct EdgeTriangles {
   std::vector<std::pair<std::uint64_t, std::uint32_t>> half;
   explicit EdgeTriangles(const TriangleSoup& m) {
     for (std::uint32_t t = 0; t < m.triangles.size(); ++t)
-      for (int i = 0; i < 3; ++i) half.push_back({undirected(m.triangles[t][static_cast<std::size_t>(i)], m.triangles[t][static_cast<std::size_t>((i + 1) % 3)]), t});
+      for (int i = 0; i < 3; ++i) half.push_back({undirected_edge_key(m.triangles[t][static_cast<std::size_t>(i)], m.triangles[t][static_cast<std::size_t>((i + 1) % 3)]), t});
     std::sort(half.begin(), half.end());
   }
   template <class F>
@@ -110,7 +110,7 @@ void insert_isolated_vertices(TriangleSoup& mesh, std::span<const DomainSegment>
                               std::span<const std::uint32_t> isolated) {
   if (isolated.empty()) return;
   std::vector<std::uint64_t> fixed;
-  for (const DomainSegment& s : constrained) fixed.push_back(undirected(s.a, s.b));
+  for (const DomainSegment& s : constrained) fixed.push_back(undirected_edge_key(s.a, s.b));
   std::sort(fixed.begin(), fixed.end());
   const auto is_fixed = [&](std::uint64_t key) { return std::binary_search(fixed.begin(), fixed.end(), key); };
   const TriangleGrid grid(mesh);
@@ -142,7 +142,7 @@ void insert_isolated_vertices(TriangleSoup& mesh, std::span<const DomainSegment>
     for (const std::uint32_t t : hosts) {
       cavity[t] = 1;
       for (int i = 0; i < 3; ++i) {
-        const std::uint64_t key = undirected(mesh.triangles[t][static_cast<std::size_t>(i)], mesh.triangles[t][static_cast<std::size_t>((i + 1) % 3)]);
+        const std::uint64_t key = undirected_edge_key(mesh.triangles[t][static_cast<std::size_t>(i)], mesh.triangles[t][static_cast<std::size_t>((i + 1) % 3)]);
         if (!is_fixed(key)) edges.for_each(key, [&](std::uint32_t n) { cavity[n] = 1; });
       }
     }
@@ -164,8 +164,8 @@ void insert_isolated_vertices(TriangleSoup& mesh, std::span<const DomainSegment>
     for (int i = 0; i < 3; ++i) {
       const std::uint32_t a = mesh.triangles[t][static_cast<std::size_t>(i)], b = mesh.triangles[t][static_cast<std::size_t>((i + 1) % 3)];
       bool inner = false;
-      edges.for_each(undirected(a, b), [&](std::uint32_t n) { inner = inner || (n != t && cavity[n]); });
-      if (!inner || is_fixed(undirected(a, b))) {
+      edges.for_each(undirected_edge_key(a, b), [&](std::uint32_t n) { inner = inner || (n != t && cavity[n]); });
+      if (!inner || is_fixed(undirected_edge_key(a, b))) {
         front.push_back({a, b});
         front_region.push_back(mesh.labels[t]);
       }

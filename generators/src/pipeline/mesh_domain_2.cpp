@@ -47,9 +47,9 @@ constexpr std::uint64_t kMaxGlobalRetries = 256;
 constexpr std::uint64_t kMaxGlobalRetryWork = std::uint64_t{1} << 22;
 
 // Times the stages (for the statistics only: no decision depends on time).
-class StageClock {
+class DomainStageClock {
  public:
-  explicit StageClock(std::vector<StageTiming>& out) : out_(out), start_(Clock::now()) {}
+  explicit DomainStageClock(std::vector<StageTiming>& out) : out_(out), start_(Clock::now()) {}
   void lap(const char* stage) {
     const auto now = Clock::now();
     out_.push_back({stage, std::chrono::duration<double>(now - start_).count()});
@@ -143,7 +143,7 @@ std::vector<double> max_area_by_index(const PlanarDomain& domain) {
 
 Generated advancing_front_stage(const detail::DomainTriangulation& dt, const detail::DiscretizedBoundary& boundary,
                                 const detail::DomainClassification& c, const MeshDomainOptions2& options,
-                                const ProgressCallback& progress, StageClock& clock) {
+                                const ProgressCallback& progress, DomainStageClock& clock) {
   AdvancingFrontOptions front_options;
   front_options.size = options.size;
   front_options.max_global_retries = kMaxGlobalRetries;
@@ -303,7 +303,7 @@ void scale_back(io::MeshData& mesh, int e) {
 MeshDomainResult2 mesh_domain_2(const PlanarDomain& input, const MeshDomainOptions2& input_options,
                                 const ProgressCallback& progress) {
   MeshDomainResult2 result;
-  StageClock clock(result.stats.timings);
+  DomainStageClock clock(result.stats.timings);
   refuse_if_invalid(input);
   detail::classify_domain(with_indexed_regions(input), progress);  // refusals in the input's coordinates
   clock.lap("validation");

@@ -9,7 +9,7 @@ namespace {
 
 // The correctly rounded double of an exact rational, subnormals included: MPFR rounds to
 // 53 bits inside double's exponent range, then mpfr_subnormalize fixes the subnormal range.
-double round_to_nearest(const mpq_t value) {
+double round_mpq_to_nearest(const mpq_t value) {
   const mpfr_exp_t saved_emin = mpfr_get_emin();
   const mpfr_exp_t saved_emax = mpfr_get_emax();
   mpfr_set_emin(-1073);
@@ -37,7 +37,7 @@ double coordinate_on_segment(double a, double b, double f) {
   mpq_sub(qb, qb, qa);  // b − a
   mpq_mul(qb, qb, qf);  // f·(b − a)
   mpq_add(qb, qb, qa);  // a + f·(b − a)
-  const double result = round_to_nearest(qb);
+  const double result = round_mpq_to_nearest(qb);
   mpq_clears(qa, qb, qf, nullptr);
   return result;
 }

@@ -12,9 +12,9 @@ namespace certimesh::generators {
 
 namespace {
 
-class StageClock {
+class SolidStageClock {
  public:
-  explicit StageClock(MeshStats3& stats) : stats_(stats) {}
+  explicit SolidStageClock(MeshStats3& stats) : stats_(stats) {}
   void stop(std::string_view stage) {
     const auto now = std::chrono::steady_clock::now();
     stats_.stages.push_back({stage, std::chrono::duration<double>(now - start_).count()});
@@ -26,7 +26,7 @@ class StageClock {
   std::chrono::steady_clock::time_point start_ = std::chrono::steady_clock::now();
 };
 
-std::vector<Point3> points_of(const io::MeshData& m) {
+std::vector<Point3> points_of_mesh(const io::MeshData& m) {
   std::vector<Point3> p(m.point_count());
   for (std::size_t i = 0; i < p.size(); ++i) p[i] = {m.coordinates[3 * i], m.coordinates[3 * i + 1], m.coordinates[3 * i + 2]};
   return p;
@@ -34,7 +34,7 @@ std::vector<Point3> points_of(const io::MeshData& m) {
 
 // The mesh as io::MeshData, vertices in no tetrahedron left out (the others keep their order,
 // so input vertices stay first and in their order); returns how many were left out.
-std::size_t to_mesh_data(const Tetrahedralization3& solid, const std::vector<io::Label>& input_point_labels,
+std::size_t solid_to_mesh_data(const Tetrahedralization3& solid, const std::vector<io::Label>& input_point_labels,
                          io::MeshData& mesh) {
   std::vector<std::uint32_t> id(solid.points.size(), 0);
   for (const auto& t : solid.tetrahedra)
@@ -76,9 +76,9 @@ TetrahedralRefinementOptions refinement_options(const MeshOptions3& options) {
 MeshResult3 mesh_convex_hull_3(const io::MeshData& points, const MeshOptions3& options,
                                const ProgressCallback& progress) {
   MeshResult3 result;
-  StageClock clock(result.stats);
+  SolidStageClock clock(result.stats);
   Tetrahedralization3 solid;
-  solid.points = points_of(points);
+  solid.points = points_of_mesh(points);
   result.stats.input_vertices = solid.points.size();
   solid.tetrahedra = Delaunay3(solid.points, progress).tetrahedra();
   clock.stop("delaunay");
@@ -87,13 +87,13 @@ MeshResult3 mesh_convex_hull_3(const io::MeshData& points, const MeshOptions3& o
     clock.stop("refinement");
   }
   result.stats.interior_steiner_points = solid.points.size() - result.stats.input_vertices;
-  to_mesh_data(solid, points.point_labels, result.mesh);
+  solid_to_mesh_data(solid, points.point_labels, result.mesh);
   return result;
 }
 
 MeshResult3 mesh_surface_3(Surface3 surface, const MeshOptions3& options, const ProgressCallback& progress) {
   MeshResult3 result;
-  StageClock clock(result.stats);
+  SolidStageClock clock(result.stats);
   const SurfaceCheck check = validate_surface(surface);  // orients .poly/.smesh shells outward
   result.stats.surface_shells = check.shells.size();
   result.stats.cavities = check.cavities;
@@ -123,7 +123,7 @@ MeshResult3 mesh_surface_3(Surface3 surface, const MeshOptions3& options, const 
   }
   result.stats.unused_input_vertices = check.unused_vertices;
   result.stats.input_vertices = surface.points.size() - check.unused_vertices;
-  to_mesh_data(solid, {}, result.mesh);
+  solid_to_mesh_data(solid, {}, result.mesh);
   result.stats.interior_steiner_points =
       result.mesh.point_count() - result.stats.input_vertices - result.stats.boundary_steiner_points;
   return result;

@@ -10,12 +10,8 @@
 namespace certimesh::predicates::intersection_detail {
 namespace {
 
-bool contains(std::span<const Point3> set, const Point3& p) {
-  return std::find(set.begin(), set.end(), p) != set.end();
-}
-
 void add_distinct(std::vector<Point3>& set, const Point3& p) {
-  if (!contains(set, p)) set.push_back(p);
+  if (!contains_point(set, p)) set.push_back(p);
 }
 
 std::vector<Point3> distinct_points(std::span<const Vertex3> e) {
@@ -25,7 +21,7 @@ std::vector<Point3> distinct_points(std::span<const Vertex3> e) {
 }
 
 bool subset(std::span<const Point3> a, std::span<const Point3> b) {
-  return std::all_of(a.begin(), a.end(), [&](const Point3& p) { return contains(b, p); });
+  return std::all_of(a.begin(), a.end(), [&](const Point3& p) { return contains_point(b, p); });
 }
 
 std::vector<Point3> without(std::span<const Point3> set, const Point3& p) {
@@ -61,7 +57,7 @@ bool exact_overlap(std::span<const Vertex3> a, std::span<const Vertex3> b) {
     for (const Simplex& g : simplex_pieces(pb, sigma)) {
       std::vector<Point3> c;
       for (const Point3& p : sigma)
-        if (contains(f, p) && contains(g, p)) c.push_back(p);
+        if (contains_point(f, p) && contains_point(g, p)) c.push_back(p);
       if (meet_outside_face(f, g, c)) return true;
     }
   return false;

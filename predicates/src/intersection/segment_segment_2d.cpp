@@ -6,7 +6,7 @@
 namespace certimesh::predicates {
 namespace {
 template <class Sg>
-struct Rules {
+struct SegmentSegment2dRules {
   static Overlap run(const std::array<Vertex2, 2>& s, const std::array<Vertex2, 2>& t) {
     return intersection_detail::segment_segment_rules<Sg>(s, t);
   }
@@ -15,7 +15,7 @@ struct Rules {
 
 Overlap segment_segment_2d(const std::array<Vertex2, 2>& s, const std::array<Vertex2, 2>& t,
                            IntersectionMode mode) {
-  return intersection_detail::dispatch<Rules>(s, t, mode, "segment_segment_2d");
+  return intersection_detail::dispatch<SegmentSegment2dRules>(s, t, mode, "segment_segment_2d");
 }
 
 }  // namespace certimesh::predicates

@@ -9,15 +9,11 @@
 namespace certimesh::predicates::intersection_detail {
 namespace {
 
-bool contains(std::span<const Point3> set, const Point3& p) {
-  return std::find(set.begin(), set.end(), p) != set.end();
-}
-
 // Points strictly inside the segment sigma are redundant: the end points span them.
 void drop_inside_sigma(std::vector<Point3>& pts, std::span<const Point3> sigma) {
   if (sigma.size() != 2) return;
   std::erase_if(pts, [&](const Point3& x) {
-    return !contains(sigma, x) && hulls_intersect(std::span<const Point3>(&x, 1), sigma);
+    return !contains_point(sigma, x) && hulls_intersect(std::span<const Point3>(&x, 1), sigma);
   });
 }
 
@@ -52,7 +48,7 @@ std::vector<Simplex> planar_pieces(const Frame& f, const Point3& a, const Point3
   for (int i = 0; i < 3; ++i) {
     if (e[i] >= 0) continue;
     const Point3 &u = t[i], &w = t[(i + 1) % 3], &o = t[(i + 2) % 3];
-    if (!contains(sigma, o) || !contains(sigma, m)) break;
+    if (!contains_point(sigma, o) || !contains_point(sigma, m)) break;
     if (frame_orient2(f, m, o, u) * frame_orient2(f, m, o, w) < 0) return {{u, m, o}, {m, w, o}};
   }
   return out;

@@ -7,6 +7,7 @@
 // sigma, and that is what lets shared vertices be handled piece by piece.
 #pragma once
 
+#include <algorithm>
 #include <span>
 #include <vector>
 
@@ -15,6 +16,12 @@
 namespace certimesh::predicates::intersection_detail {
 
 using Simplex = std::vector<Point3>;
+
+/// Whether p is one of the points of `set` (exact coordinates); simplex_pieces.cpp and
+/// exact_fallback.cpp both ask it.
+inline bool contains_point(std::span<const Point3> set, const Point3& p) {
+  return std::find(set.begin(), set.end(), p) != set.end();
+}
 
 /// `points`: the element's distinct points (at most 4); `sigma`: the distinct shared
 /// points (at most 2), all among `points`.

@@ -54,7 +54,7 @@ Overlap containment(const std::array<Vertex3, 4>& tet, const std::array<Vertex3,
 }
 
 template <class Sg>
-struct Rules {
+struct TetrahedronTriangleRules {
   static Overlap run(const std::array<Vertex3, 4>& tet, const std::array<Vertex3, 3>& tri) {
     const std::span<const Vertex3> ts(tet), fs(tri);
     if (fully_shared(fs, ts) || fully_shared(ts, fs)) return Overlap::disjoint;
@@ -67,7 +67,7 @@ struct Rules {
 
 Overlap tetrahedron_triangle(const std::array<Vertex3, 4>& tet, const std::array<Vertex3, 3>& tri,
                              IntersectionMode mode) {
-  return intersection_detail::dispatch<Rules>(tet, tri, mode, "tetrahedron_triangle");
+  return intersection_detail::dispatch<TetrahedronTriangleRules>(tet, tri, mode, "tetrahedron_triangle");
 }
 
 }  // namespace certimesh::predicates

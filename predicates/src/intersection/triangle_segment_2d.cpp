@@ -6,7 +6,7 @@
 namespace certimesh::predicates {
 namespace {
 template <class Sg>
-struct Rules {
+struct TriangleSegment2dRules {
   static Overlap run(const std::array<Vertex2, 3>& tri, const std::array<Vertex2, 2>& seg) {
     return intersection_detail::triangle_segment_2d_rules<Sg>(tri, seg);
   }
@@ -15,7 +15,7 @@ struct Rules {
 
 Overlap triangle_segment_2d(const std::array<Vertex2, 3>& tri, const std::array<Vertex2, 2>& seg,
                             IntersectionMode mode) {
-  return intersection_detail::dispatch<Rules>(tri, seg, mode, "triangle_segment_2d");
+  return intersection_detail::dispatch<TriangleSegment2dRules>(tri, seg, mode, "triangle_segment_2d");
 }
 
 }  // namespace certimesh::predicates

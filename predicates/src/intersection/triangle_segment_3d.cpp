@@ -6,7 +6,7 @@
 namespace certimesh::predicates {
 namespace {
 template <class Sg>
-struct Rules {
+struct TriangleSegment3dRules {
   static Overlap run(const std::array<Vertex3, 3>& tri, const std::array<Vertex3, 2>& seg) {
     return intersection_detail::triangle_segment_3d_rules<Sg>(tri, seg);
   }
@@ -15,7 +15,7 @@ struct Rules {
 
 Overlap triangle_segment_3d(const std::array<Vertex3, 3>& tri, const std::array<Vertex3, 2>& seg,
                             IntersectionMode mode) {
-  return intersection_detail::dispatch<Rules>(tri, seg, mode, "triangle_segment_3d");
+  return intersection_detail::dispatch<TriangleSegment3dRules>(tri, seg, mode, "triangle_segment_3d");
 }
 
 }  // namespace certimesh::predicates

@@ -22,7 +22,7 @@ bool an_edge_meets(const std::array<Vertex3, 3>& edges_of, const std::array<Vert
 }
 
 template <class Sg>
-struct Rules {
+struct TriangleTriangle3dRules {
   static Overlap run(const std::array<Vertex3, 3>& a, const std::array<Vertex3, 3>& b) {
     const std::span<const Vertex3> as(a), bs(b);
     if (fully_shared(as, bs) || fully_shared(bs, as)) return Overlap::disjoint;
@@ -35,7 +35,7 @@ struct Rules {
 
 Overlap triangle_triangle_3d(const std::array<Vertex3, 3>& a, const std::array<Vertex3, 3>& b,
                              IntersectionMode mode) {
-  return intersection_detail::dispatch<Rules>(a, b, mode, "triangle_triangle_3d");
+  return intersection_detail::dispatch<TriangleTriangle3dRules>(a, b, mode, "triangle_triangle_3d");
 }
 
 }  // namespace certimesh::predicates

@@ -17,7 +17,7 @@ namespace certimesh::topology {
 
 namespace {
 
-constexpr double invalid = -1.0;
+constexpr double invalid_slide_quality = -1.0;
 
 // v's star with v at a trial position.
 class SlidingStar {
@@ -31,14 +31,14 @@ class SlidingStar {
     }
   }
 
-  /// The star's worst quality with v at x, or `invalid` when x is not strictly between the
+  /// The star's worst quality with v at x, or `invalid_slide_quality` when x is not strictly between the
   /// neighbours along the segment or some star triangle is not strictly counterclockwise.
   double quality(const Point2d& x) {
-    if (!local::strictly_between(before_, x, after_, run_.segment)) return invalid;
+    if (!local::strictly_between(before_, x, after_, run_.segment)) return invalid_slide_quality;
     double q = std::numeric_limits<double>::infinity();
     for (std::size_t k = 0; k < triangles_.size(); ++k) {
       triangles_[k].points[moving_[k]] = x;
-      if (!local::is_positive(triangles_[k])) return invalid;
+      if (!local::is_positive(triangles_[k])) return invalid_slide_quality;
       q = std::min(q, local::quality_of(triangles_[k], options_));
     }
     return q;
@@ -71,7 +71,7 @@ std::optional<LocalChange2> try_boundary_slide(TriangleMesh2& mesh, VertexId v, 
   SlidingStar star(mesh, v, *run, options);
   const double q0 = star.quality(mesh.point(v));
   const double q1 = star.quality(target);
-  if (q0 == invalid || !(q1 > q0 + options.minimum_shift_gain)) return std::nullopt;
+  if (q0 == invalid_slide_quality || !(q1 > q0 + options.minimum_shift_gain)) return std::nullopt;
   mesh.move_vertex(v, target);
   return LocalChange2{run->star.elements, run->star.elements};
 }
@@ -82,7 +82,7 @@ std::optional<LocalChange2> local::slide_along_segment(TriangleMesh2& mesh, Vert
   if (!run) return std::nullopt;
   SlidingStar star(mesh, v, *run, options);
   const double q0 = star.quality(mesh.point(v));
-  if (q0 == invalid) return std::nullopt;
+  if (q0 == invalid_slide_quality) return std::nullopt;
   const double f_before = local::fraction_along(mesh.point(run->before), run->segment);
   const double f_after = local::fraction_along(mesh.point(run->after), run->segment);
   const auto [f, q1] = search_segment(star, std::min(f_before, f_after), std::max(f_before, f_after), q0);

@@ -24,7 +24,7 @@ namespace certimesh::topology {
 namespace {
 
 constexpr double sqrt_epsilon = 1.4901161193847656e-08;  // √ε_mach = 2^-26
-constexpr double invalid = -1.0;
+constexpr double invalid_shift_quality = -1.0;
 
 class StarAtPosition {
  public:
@@ -47,12 +47,12 @@ class StarAtPosition {
     return q;
   }
 
-  /// Q_σ with v at x, or `invalid` when some star triangle is not strictly counterclockwise.
+  /// Q_σ with v at x, or `invalid_shift_quality` when some star triangle is not strictly counterclockwise.
   double quality(const Point2d& x) {
-    if (!std::isfinite(x[0]) || !std::isfinite(x[1])) return invalid;
+    if (!std::isfinite(x[0]) || !std::isfinite(x[1])) return invalid_shift_quality;
     const double q = raw_quality(x);
     for (const auto& t : triangles_)
-      if (!local::is_positive(t)) return invalid;
+      if (!local::is_positive(t)) return invalid_shift_quality;
     return q;
   }
 
@@ -81,7 +81,7 @@ class StarAtPosition {
   std::vector<std::size_t> moving_;
 };
 
-double distance(const Point2d& p, const Point2d& q) { return std::hypot(q[0] - p[0], q[1] - p[1]); }
+double distance_2d(const Point2d& p, const Point2d& q) { return std::hypot(q[0] - p[0], q[1] - p[1]); }
 
 // The finite-difference increment (5.2.2): √ε_mach relative to the star's shortest edge (the
 // monograph's absolute √ε is not scale-invariant), at most 1 % of that edge, and large enough
@@ -91,8 +91,8 @@ double difference_step(const TriangleMesh2& mesh, VertexId v, const local::Order
   double shortest = std::numeric_limits<double>::infinity();
   for (std::size_t k = 0; k < star.link.size(); ++k) {
     const Point2d a = mesh.point(star.link[k]);
-    shortest = std::min({shortest, distance(p, a),
-                         distance(a, mesh.point(star.link[(k + 1) % star.link.size()]))});
+    shortest = std::min({shortest, distance_2d(p, a),
+                         distance_2d(a, mesh.point(star.link[(k + 1) % star.link.size()]))});
   }
   const double magnitude = std::max(std::abs(p[0]), std::abs(p[1]));
   return std::min(std::max(sqrt_epsilon * shortest, 0x1p-40 * magnitude), shortest / 100.0);
@@ -123,7 +123,7 @@ std::optional<LocalChange2> try_node_shift(TriangleMesh2& mesh, VertexId v,
   StarAtPosition at(mesh, v, *star, options);
   const Point2d p = mesh.point(v);
   const double q0 = at.quality(p);
-  if (q0 == invalid) return std::nullopt;
+  if (q0 == invalid_shift_quality) return std::nullopt;
   const double delta = difference_step(mesh, v, *star);
   const auto q = [&](double dx, double dy) { return at.raw_quality({p[0] + dx, p[1] + dy}); };
   // The monograph's forward differences (5.2.2) first. Where the two worst triangles trade
