@@ -19,12 +19,12 @@ namespace {
 
 using detail::RecoveryMesh;
 using detail::RecoveryVertex;
-using detail::Surface3;
+using detail::RecoverySurface3;
 using topology::ElementId;
 using topology::VertexId;
 
-Surface3 surface_of(std::span<const Point3> points, std::span<const std::array<std::uint32_t, 3>> triangles) {
-  Surface3 s{points, triangles, {}, {}, std::vector<std::vector<std::uint32_t>>(points.size())};
+RecoverySurface3 surface_of(std::span<const Point3> points, std::span<const std::array<std::uint32_t, 3>> triangles) {
+  RecoverySurface3 s{points, triangles, {}, {}, std::vector<std::vector<std::uint32_t>>(points.size())};
   std::map<std::array<std::uint32_t, 2>, std::vector<std::uint32_t>> edges;
   for (std::uint32_t t = 0; t < triangles.size(); ++t)
     for (int i = 0; i < 3; ++i) {
@@ -51,7 +51,7 @@ Surface3 surface_of(std::span<const Point3> points, std::span<const std::array<s
 
 // The Delaunay tetrahedralization of the points the triangles use, into m (vertex ids =
 // input indices).
-void start_with_delaunay(RecoveryMesh& m, const Surface3& s, BoundaryRecoveryCounts& counts) {
+void start_with_delaunay(RecoveryMesh& m, const RecoverySurface3& s, BoundaryRecoveryCounts& counts) {
   for (const Point3& p : s.points) m.add_vertex(detail::make_input_vertex(p));
   std::vector<std::uint32_t> used;
   for (std::uint32_t v = 0; v < s.points.size(); ++v)
@@ -122,7 +122,7 @@ SolidMesh3 output_of(const RecoveryMesh& m, BoundaryRecoveryCounts counts) {
 
 SolidMesh3 tetrahedralize_solid_3(std::span<const Point3> points, std::span<const std::array<std::uint32_t, 3>> triangles,
                                   const BoundaryRecoveryOptions& options, const ProgressCallback& progress) {
-  const Surface3 s = surface_of(points, triangles);
+  const RecoverySurface3 s = surface_of(points, triangles);
   RecoveryMesh m;
   BoundaryRecoveryCounts counts;
   try {

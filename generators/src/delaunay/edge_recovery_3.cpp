@@ -32,7 +32,7 @@ int local_of(const topology::TetrahedralMesh3::Element& t, VertexId v) {
 // by the fan from u (a 3-2 flip when the edge has three tetrahedra), or by any valid
 // triangulation of its ring that makes the edge (u, b) when b is in that ring.
 // An edge of f may be on a surface edge already recovered: that one is never removed.
-bool remove_face(RecoveryMesh& m, const Surface3& s, ElementId t, int i, VertexId u, VertexId b,
+bool remove_face(RecoveryMesh& m, const RecoverySurface3& s, ElementId t, int i, VertexId u, VertexId b,
                  const topology::TetrahedralMesh3::Facet& f) {
   if (try_flip_2_3(m, t, i)) return true;
   for (int k = 0; k < 3; ++k) {
@@ -45,7 +45,7 @@ bool remove_face(RecoveryMesh& m, const Surface3& s, ElementId t, int i, VertexI
 // One step of the walk from u towards b along the surface edge e = (a, b); returns the next
 // vertex on (a, b), after splitting what the edge crosses.
 // With `flips` false no flip is tried: the walk then ends within the split bound.
-VertexId step(RecoveryMesh& m, const Surface3& s, std::uint32_t e, VertexId u, bool flips,
+VertexId step(RecoveryMesh& m, const RecoverySurface3& s, std::uint32_t e, VertexId u, bool flips,
               BoundaryRecoveryCounts& counts) {
   const VertexId a{s.edges[e][0]}, b{s.edges[e][1]};
   const QPoint& qa = m.vertices[a.value].exact;
@@ -111,7 +111,7 @@ VertexId step(RecoveryMesh& m, const Surface3& s, std::uint32_t e, VertexId u, b
 
 }  // namespace
 
-void recover_edges(RecoveryMesh& m, const Surface3& s, BoundaryRecoveryCounts& counts, const ProgressCallback& progress) {
+void recover_edges(RecoveryMesh& m, const RecoverySurface3& s, BoundaryRecoveryCounts& counts, const ProgressCallback& progress) {
   for (std::uint32_t e = 0; e < s.edges.size(); ++e) {
     const VertexId a{s.edges[e][0]}, b{s.edges[e][1]};
     // Flips first, within a budget (proofs/boundary_recovery_3.md section 2: a flip that

@@ -156,7 +156,7 @@ bool remove_by_fan_from_corner(RecoveryMesh& m, const TriangleCrossings& triangl
 
 }  // namespace
 
-void recover_faces(RecoveryMesh& m, const Surface3& s, BoundaryRecoveryCounts& counts, const ProgressCallback& progress) {
+void recover_faces(RecoveryMesh& m, const RecoverySurface3& s, BoundaryRecoveryCounts& counts, const ProgressCallback& progress) {
   SearchScratch scratch;
   for (std::uint32_t f = 0; f < s.triangles.size(); ++f) {
     // Already a mesh face (the common case after the flips of stage 1): a mesh edge cannot

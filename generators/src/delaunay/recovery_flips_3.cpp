@@ -146,7 +146,7 @@ class RingTriangulation {
 
 }  // namespace
 
-bool on_one_surface_edge(const RecoveryMesh& m, const Surface3& s, VertexId v, VertexId w) {
+bool on_one_surface_edge(const RecoveryMesh& m, const RecoverySurface3& s, VertexId v, VertexId w) {
   const RecoveryVertex &rv = m.vertices[v.value], &rw = m.vertices[w.value];
   using Origin = RecoveryVertex::Origin;
   auto is_end = [&](std::uint32_t e, VertexId x) { return s.edges[e][0] == x.value || s.edges[e][1] == x.value; };
@@ -210,7 +210,7 @@ bool remove_edge_now(RecoveryMesh& m, const EdgeRing& r, VertexId x, VertexId y,
 // target (whose stars the walk relies on) nor, on an open ring, an end: the 2-3 flip of the
 // face (x, y, r_i), else the removal of the edge (y, r_i) by the fan from x or of (x, r_i) by
 // the fan from y (r_i is then no longer a neighbour of both), never of an edge on the surface.
-bool shrink_ring(RecoveryMesh& m, const Surface3& s, const EdgeRing& r, VertexId x, VertexId y, VertexId apex,
+bool shrink_ring(RecoveryMesh& m, const RecoverySurface3& s, const EdgeRing& r, VertexId x, VertexId y, VertexId apex,
                  std::optional<VertexId> target) {
   const std::size_t n = r.ring.size();
   for (std::size_t i = r.closed ? 0 : 1; i < (r.closed ? n : n - 1); ++i) {
@@ -236,7 +236,7 @@ bool shrink_ring(RecoveryMesh& m, const Surface3& s, const EdgeRing& r, VertexId
 }  // namespace
 
 bool try_remove_edge(RecoveryMesh& m, VertexId x, VertexId y, VertexId apex, std::optional<VertexId> target,
-                     const Surface3* shrink) {
+                     const RecoverySurface3* shrink) {
   bool changed = false;
   for (;;) {  // every round takes one vertex out of the ring (shrink_ring), so it ends
     const EdgeRing r = ring_of(m, x, y);

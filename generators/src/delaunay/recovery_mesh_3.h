@@ -41,7 +41,7 @@ struct RecoveryVertex {
 
 /// The surface: its triangles, its edges (each with its two triangles) and per input vertex
 /// its triangles.
-struct Surface3 {
+struct RecoverySurface3 {
   std::span<const Point3> points;
   std::span<const std::array<std::uint32_t, 3>> triangles;
   std::vector<std::array<std::uint32_t, 2>> edges;           // sorted (lower, higher), sorted
@@ -101,11 +101,11 @@ bool try_flip_2_3(RecoveryMesh& m, ElementId t, int i);
 /// edge from that vertex to x or y -- and the removal is tried again (TetGen's nested flips,
 /// one level). Returns whether the mesh changed: the edge removed, or only such flips made.
 bool try_remove_edge(RecoveryMesh& m, VertexId x, VertexId y, VertexId apex,
-                     std::optional<VertexId> target = std::nullopt, const Surface3* shrink = nullptr);
+                     std::optional<VertexId> target = std::nullopt, const RecoverySurface3* shrink = nullptr);
 
 /// Whether v and w lie on one surface edge (so the mesh edge (v, w), if it is one, is part of
 /// that edge's chain): decided by the vertices' origins.
-bool on_one_surface_edge(const RecoveryMesh& m, const Surface3& s, VertexId v, VertexId w);
+bool on_one_surface_edge(const RecoveryMesh& m, const RecoverySurface3& s, VertexId v, VertexId w);
 
 /// The vertex record of an exact rational point.
 RecoveryVertex make_vertex(QPoint p, RecoveryVertex::Origin origin, std::uint32_t on);
@@ -119,13 +119,13 @@ mpq_class orient_q(const QPoint& a, const QPoint& b, const QPoint& c, const QPoi
 QPoint along(const QPoint& a, const QPoint& b, const mpq_class& t);
 
 // The stages (boundary_recovery_3.h).
-void recover_edges(RecoveryMesh& m, const Surface3& s, BoundaryRecoveryCounts& counts, const ProgressCallback& progress);
-void recover_faces(RecoveryMesh& m, const Surface3& s, BoundaryRecoveryCounts& counts, const ProgressCallback& progress);
+void recover_edges(RecoveryMesh& m, const RecoverySurface3& s, BoundaryRecoveryCounts& counts, const ProgressCallback& progress);
+void recover_faces(RecoveryMesh& m, const RecoverySurface3& s, BoundaryRecoveryCounts& counts, const ProgressCallback& progress);
 /// Removes the tetrahedra outside the solid (winding number 0).
-void keep_solid(RecoveryMesh& m, const Surface3& s, BoundaryRecoveryCounts& counts);
+void keep_solid(RecoveryMesh& m, const RecoverySurface3& s, BoundaryRecoveryCounts& counts);
 /// Algorithm 19: every surface Steiner point moved inside, the surface re-triangulated.
-void remove_surface_steiner_points(RecoveryMesh& m, const Surface3& s, BoundaryRecoveryCounts& counts);
+void remove_surface_steiner_points(RecoveryMesh& m, const RecoverySurface3& s, BoundaryRecoveryCounts& counts);
 /// The surface triangle that face (a, b, c) lies in, or -1: decided by the vertices' origins.
-std::int64_t surface_triangle_of(const RecoveryMesh& m, const Surface3& s, VertexId a, VertexId b, VertexId c);
+std::int64_t surface_triangle_of(const RecoveryMesh& m, const RecoverySurface3& s, VertexId a, VertexId b, VertexId c);
 
 }  // namespace certimesh::generators::detail

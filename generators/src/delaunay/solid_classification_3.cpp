@@ -18,7 +18,7 @@ namespace certimesh::generators::detail {
 
 namespace {
 
-bool lies_on(const RecoveryMesh& m, const Surface3& s, VertexId v, std::uint32_t triangle) {
+bool lies_on(const RecoveryMesh& m, const RecoverySurface3& s, VertexId v, std::uint32_t triangle) {
   const RecoveryVertex& r = m.vertices[v.value];
   const auto& t = s.triangles[triangle];
   auto corner = [&](std::uint32_t x) { return x == t[0] || x == t[1] || x == t[2]; };
@@ -32,7 +32,7 @@ bool lies_on(const RecoveryMesh& m, const Surface3& s, VertexId v, std::uint32_t
 }
 
 // The change of winding number from t to the tetrahedron across its local facet j.
-int winding_step(const RecoveryMesh& m, const Surface3& s, ElementId t, int j) {
+int winding_step(const RecoveryMesh& m, const RecoverySurface3& s, ElementId t, int j) {
   const auto f = m.mesh.facet(t, j);
   const std::int64_t triangle = surface_triangle_of(m, s, f[0], f[1], f[2]);
   if (triangle < 0) return 0;
@@ -48,7 +48,7 @@ int winding_step(const RecoveryMesh& m, const Surface3& s, ElementId t, int j) {
 
 }  // namespace
 
-std::int64_t surface_triangle_of(const RecoveryMesh& m, const Surface3& s, VertexId a, VertexId b, VertexId c) {
+std::int64_t surface_triangle_of(const RecoveryMesh& m, const RecoverySurface3& s, VertexId a, VertexId b, VertexId c) {
   const RecoveryVertex& r = m.vertices[a.value];
   auto check = [&](std::uint32_t t) { return lies_on(m, s, a, t) && lies_on(m, s, b, t) && lies_on(m, s, c, t); };
   switch (r.origin) {
@@ -66,7 +66,7 @@ std::int64_t surface_triangle_of(const RecoveryMesh& m, const Surface3& s, Verte
   return -1;
 }
 
-void keep_solid(RecoveryMesh& m, const Surface3& s, BoundaryRecoveryCounts& counts) {
+void keep_solid(RecoveryMesh& m, const RecoverySurface3& s, BoundaryRecoveryCounts& counts) {
   const std::size_t slots = m.mesh.element_slot_count();
   std::vector<int> winding(slots, INT_MIN);
   std::deque<ElementId> queue;

@@ -43,7 +43,7 @@ struct Plane2 {
   }
 };
 
-Plane2 plane_of(const Surface3& s, std::uint32_t triangle) {
+Plane2 plane_of(const RecoverySurface3& s, std::uint32_t triangle) {
   const auto& t = s.triangles[triangle];
   const Point3 &a = s.points[t[0]], &b = s.points[t[1]], &c = s.points[t[2]];
   const double n[3] = {(b.y - a.y) * (c.z - a.z) - (b.z - a.z) * (c.y - a.y),
@@ -124,7 +124,7 @@ struct Fan {
 };
 
 // The boundary faces at v grouped by the surface triangle they lie in.
-std::vector<Fan> fans_of(const RecoveryMesh& m, const Surface3& s, VertexId v) {
+std::vector<Fan> fans_of(const RecoveryMesh& m, const RecoverySurface3& s, VertexId v) {
   std::vector<Fan> fans;
   for (const ElementId t : m.star(v)) {
     const auto c = m.mesh.vertices(t);
@@ -167,7 +167,7 @@ Point3 normalized(const Point3& p) {
   return l > 0 ? Point3{p.x / l, p.y / l, p.z / l} : Point3{0, 0, 0};
 }
 
-Point3 inward_normal(const Surface3& s, std::uint32_t triangle) {
+Point3 inward_normal(const RecoverySurface3& s, std::uint32_t triangle) {
   const auto& t = s.triangles[triangle];
   const Point3 &a = s.points[t[0]], &b = s.points[t[1]], &c = s.points[t[2]];
   // Scaled by the largest coordinate difference first, so no product under- or overflows.
@@ -201,7 +201,7 @@ bool positive_with(const RecoveryMesh& m, const std::vector<Tetrahedron>& star, 
 // the inner side of each of the triangles' planes: the certificate (design decision 2) takes a
 // vertex whose rounding box meets a surface triangle as lying on it, and a moved Steiner point
 // must not (exact orient3d on the box's corners).
-bool clear_of(const Surface3& s, const std::vector<std::uint32_t>& triangles, const Point3& p) {
+bool clear_of(const RecoverySurface3& s, const std::vector<std::uint32_t>& triangles, const Point3& p) {
   const double xs[2] = {std::nextafter(p.x, -INFINITY), std::nextafter(p.x, INFINITY)};
   const double ys[2] = {std::nextafter(p.y, -INFINITY), std::nextafter(p.y, INFINITY)};
   const double zs[2] = {std::nextafter(p.z, -INFINITY), std::nextafter(p.z, INFINITY)};
@@ -220,7 +220,7 @@ bool clear_of(const Surface3& s, const std::vector<std::uint32_t>& triangles, co
 // are an interval (0, e_max) of steps (the star's kernel is convex and v is on its boundary);
 // halving from the star's reach finds a step in (e_max / 2, e_max], and half of it, in
 // (e_max / 4, e_max / 2], keeps a margin from both ends.
-bool find_position(const RecoveryMesh& m, const Surface3& s, const std::vector<std::uint32_t>& triangles, VertexId v,
+bool find_position(const RecoveryMesh& m, const RecoverySurface3& s, const std::vector<std::uint32_t>& triangles, VertexId v,
                    const std::vector<Tetrahedron>& star, const Point3& inward, Point3* out) {
   auto good = [&](const Point3& p) { return positive_with(m, star, v, p) && clear_of(s, triangles, p); };
   if (star.empty()) recovery_invariant_broken("a Steiner point in no tetrahedron");
@@ -260,7 +260,7 @@ bool find_position(const RecoveryMesh& m, const Surface3& s, const std::vector<s
 
 // Takes v off the surface, or returns false and changes nothing when its star holds no
 // double position now (a later round may find one, after its neighbours moved).
-bool take_off_surface(RecoveryMesh& m, const Surface3& s, VertexId v, BoundaryRecoveryCounts& counts,
+bool take_off_surface(RecoveryMesh& m, const RecoverySurface3& s, VertexId v, BoundaryRecoveryCounts& counts,
                       std::vector<std::uint32_t>* on_triangles) {
   const bool on_edge = m.vertices[v.value].origin == RecoveryVertex::Origin::on_edge;
   Point3 inward{0, 0, 0};
@@ -290,7 +290,7 @@ bool take_off_surface(RecoveryMesh& m, const Surface3& s, VertexId v, BoundaryRe
 
 // Moves an earlier-moved Steiner point w towards the centroid of its star (half way, or less
 // if that is not good), to give a neighbour that found no position more room.
-void recentre(RecoveryMesh& m, const Surface3& s, VertexId w, const std::vector<std::uint32_t>& triangles) {
+void recentre(RecoveryMesh& m, const RecoverySurface3& s, VertexId w, const std::vector<std::uint32_t>& triangles) {
   std::vector<Tetrahedron> star;
   for (const ElementId t : m.star(w)) star.push_back(m.mesh.vertices(t));
   if (star.empty()) return;
@@ -327,7 +327,7 @@ void recentre(RecoveryMesh& m, const Surface3& s, VertexId w, const std::vector<
 
 }  // namespace
 
-void remove_surface_steiner_points(RecoveryMesh& m, const Surface3& s, BoundaryRecoveryCounts& counts) {
+void remove_surface_steiner_points(RecoveryMesh& m, const RecoverySurface3& s, BoundaryRecoveryCounts& counts) {
   // In rounds, each an independent set of the Steiner points still on the surface (no two in
   // one tetrahedron): a point must end deeper than the surface points of its polygon, so a
   // chain of points taken one after the other would force depths shrinking geometrically
