@@ -114,26 +114,36 @@ bool try_axis(const MeshView& m, const FacetSet& set, Index v, const std::vector
       return false;
     }
   }
-  // No triangle's half-plane strictly inside a wedge.
+  // No triangle's half-plane strictly inside a wedge; and the pairs with a common bounding
+  // half-plane, tested exactly. With the open wedges disjoint and sorted, starts and ends both
+  // increase, so a wedge's end can equal only the next wedge's start (the last's, the first's);
+  // a triangle's half-plane can equal the bounds of the wedge starting at or before it and of
+  // the one before that, and other such half-planes (sorted among themselves).
+  auto test = [&](std::size_t f, std::size_t g) { return f != g && meet(f, g); };
+  for (std::size_t i = 0; i < w; ++i) {
+    const Wedge &x = wedges[i], &y = wedges[(i + 1) % w];
+    if (w > 1 && same(ax, x.end, y.start) && test(x.facet, y.facet)) return false;
+  }
   for (const Plane& p : planes) {
-    auto it = std::upper_bound(wedges.begin(), wedges.end(), p.at, [&](const Ray& r, const Wedge& x) { return less(ax, r, x.start); });
-    if (it != wedges.begin()) {
-      const Wedge& x = *(it - 1);
+    const auto it = std::upper_bound(wedges.begin(), wedges.end(), p.at, [&](const Ray& r, const Wedge& x) { return less(ax, r, x.start); });
+    const std::size_t at = static_cast<std::size_t>(it - wedges.begin());  // wedges[at - 1] starts at or before p
+    if (at > 0) {
+      const Wedge& x = wedges[at - 1];
       if (less(ax, x.start, p.at) && (wraps(x) || less(ax, p.at, x.end))) return false;
     } else if (w > 0 && wraps(wedges[w - 1]) && less(ax, p.at, wedges[w - 1].end)) {
       return false;
     }
+    for (std::size_t back = 1; back <= std::min<std::size_t>(2, w); ++back) {
+      const Wedge& x = wedges[(at + w - back) % w];
+      if ((same(ax, x.start, p.at) || same(ax, x.end, p.at)) && test(x.facet, p.facet)) return false;
+    }
   }
-  // Every pair with a common bounding half-plane: tested exactly.
-  std::vector<Plane> bounds;
-  for (const Wedge& x : wedges) bounds.push_back({x.start, x.facet}), bounds.push_back({x.end, x.facet});
-  bounds.insert(bounds.end(), planes.begin(), planes.end());
-  std::sort(bounds.begin(), bounds.end(), [&](const Plane& x, const Plane& y) { return less(ax, x.at, y.at); });
-  for (std::size_t first = 0, end = 0; first < bounds.size(); first = end) {
-    for (end = first + 1; end < bounds.size() && same(ax, bounds[first].at, bounds[end].at);) ++end;
+  std::sort(planes.begin(), planes.end(), [&](const Plane& x, const Plane& y) { return less(ax, x.at, y.at); });
+  for (std::size_t first = 0, end = 0; first < planes.size(); first = end) {
+    for (end = first + 1; end < planes.size() && same(ax, planes[first].at, planes[end].at);) ++end;
     for (std::size_t i = first; i < end; ++i)
       for (std::size_t j = i + 1; j < end; ++j)
-        if (bounds[i].facet != bounds[j].facet && meet(bounds[i].facet, bounds[j].facet)) return false;
+        if (test(planes[i].facet, planes[j].facet)) return false;
   }
   return true;
 }
