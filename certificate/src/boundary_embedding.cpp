@@ -182,7 +182,7 @@ bool sweep_pairs(const MeshView& m, const FacetSet& set, const std::vector<Box>&
     Kind kind;
   };
   std::vector<Item> plane;
-  std::vector<Box> plane_boxes;
+  std::vector<std::size_t> order, active;
   auto face_box = [&](std::size_t f, double c) {  // xy box of the triangle's vertices at z = c
     Box b;
     bool any = false;
@@ -235,14 +235,29 @@ bool sweep_pairs(const MeshView& m, const FacetSet& set, const std::vector<Box>&
     bool has_end = false, has_start = false;
     for (const Item& it : plane) has_end = has_end || it.kind == ends, has_start = has_start || it.kind == starts;
     if (!has_flat && !(has_end && has_start)) continue;
-    plane_boxes.clear();
-    for (const Item& it : plane) plane_boxes.push_back(it.box);
-    const bool stop = BoxGrid(plane_boxes, 2).any_pair([&](std::size_t a, std::size_t b) {
-      const Item &x = plane[a], &y = plane[b];
-      const bool wanted = x.kind == flat || y.kind == flat || (x.kind == ends && y.kind == starts) || (x.kind == starts && y.kind == ends);
-      if (!wanted || x.facet == y.facet || !disjoint(x.facet, y.facet)) return false;
-      return visit(std::min(x.facet, y.facet), std::max(x.facet, y.facet));
-    });
+    // Sweep and prune along x among the pieces (a uniform grid crowds where the faces lie
+    // on a curve, as a book's chords on its circle).
+    order.resize(plane.size());
+    for (std::size_t i = 0; i < plane.size(); ++i) order[i] = i;
+    std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return plane[a].box.lo[0] < plane[b].box.lo[0]; });
+    bool stop = false;
+    active.clear();
+    for (std::size_t a : order) {
+      const Item& x = plane[a];
+      std::size_t kept = 0;
+      for (std::size_t b : active) {
+        const Item& y = plane[b];
+        if (y.box.hi[0] < x.box.lo[0]) continue;  // ends left of every later piece
+        active[kept++] = b;
+        if (stop || y.box.hi[1] < x.box.lo[1] || x.box.hi[1] < y.box.lo[1]) continue;
+        const bool wanted = x.kind == flat || y.kind == flat || (x.kind == ends && y.kind == starts) || (x.kind == starts && y.kind == ends);
+        if (!wanted || x.facet == y.facet || !disjoint(x.facet, y.facet)) continue;
+        stop = visit(std::min(x.facet, y.facet), std::max(x.facet, y.facet));
+      }
+      active.resize(kept);
+      active.push_back(a);
+      if (stop) break;
+    }
     if (stop) return true;
   }
   return false;
