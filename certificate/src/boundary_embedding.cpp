@@ -122,8 +122,8 @@ namespace {
 // Fans of at least this many triangles at one vertex are decided by their cones (vertex_fans.h).
 constexpr std::size_t kFanSize = 32;
 
-// The broad phase when some fans are decided (proofs/mesh_certificate.md section 6): a sweep
-// along z. Pairs whose z ranges overlap in an open interval meet in the sweep's active set,
+// The broad phase, when some fans are decided, for the pairs with a triangle of a decided fan
+// (proofs/mesh_certificate.md section 6; the other pairs go to the grid): a sweep along z. Pairs whose z ranges overlap in an open interval meet in the sweep's active set,
 // kept in groups by the decided fan vertices of their triangles, and a group sharing a decided
 // vertex with the entering triangle is skipped whole: such a pair was decided with the fan.
 // Pairs whose z ranges meet in one value c lie, where they meet, in the plane z = c: a
@@ -134,6 +134,7 @@ template <class Visit>
 bool sweep_pairs(const MeshView& m, const FacetSet& set, const std::vector<Box>& boxes,
                  const std::vector<std::array<std::int64_t, 3>>& decided, Visit visit) {
   const std::size_t n = set.size();
+  auto in_fan = [&](std::size_t i) { return decided[i][2] >= 0; };  // sorted: -1 first
   auto disjoint = [&](std::size_t i, std::size_t j) {
     for (std::int64_t a : decided[i])
       for (std::int64_t b : decided[j])
@@ -225,7 +226,7 @@ bool sweep_pairs(const MeshView& m, const FacetSet& set, const std::vector<Box>&
       if (boxes[g].hi[2] == c) continue;
       for (std::size_t l : live) {
         const std::vector<std::size_t>& members = groups[l];
-        if (members.empty() || !disjoint(members.front(), g)) continue;
+        if (members.empty() || !disjoint(members.front(), g) || (!in_fan(g) && !in_fan(members.front()))) continue;
         for (std::size_t f : members)
           if (boxes_overlap(boxes[f], boxes[g], 3) && visit(std::min(f, g), std::max(f, g))) return true;
       }
@@ -234,7 +235,9 @@ bool sweep_pairs(const MeshView& m, const FacetSet& set, const std::vector<Box>&
     // Contacts in the plane z = c.
     bool has_end = false, has_start = false;
     for (const Item& it : plane) has_end = has_end || it.kind == ends, has_start = has_start || it.kind == starts;
-    if (!has_flat && !(has_end && has_start)) continue;
+    bool has_fan = false;
+    for (const Item& it : plane) has_fan = has_fan || in_fan(it.facet);
+    if (!has_fan || (!has_flat && !(has_end && has_start))) continue;
     // Sweep and prune along x among the pieces (a uniform grid crowds where the faces lie
     // on a curve, as a book's chords on its circle).
     order.resize(plane.size());
@@ -251,7 +254,7 @@ bool sweep_pairs(const MeshView& m, const FacetSet& set, const std::vector<Box>&
         active[kept++] = b;
         if (stop || y.box.hi[1] < x.box.lo[1] || x.box.hi[1] < y.box.lo[1]) continue;
         const bool wanted = x.kind == flat || y.kind == flat || (x.kind == ends && y.kind == starts) || (x.kind == starts && y.kind == ends);
-        if (!wanted || x.facet == y.facet || !disjoint(x.facet, y.facet)) continue;
+        if (!wanted || x.facet == y.facet || (!in_fan(x.facet) && !in_fan(y.facet)) || !disjoint(x.facet, y.facet)) continue;
         stop = visit(std::min(x.facet, y.facet), std::max(x.facet, y.facet));
       }
       active.resize(kept);
@@ -311,8 +314,17 @@ Finding first_contact(const MeshView& m, const FacetSet& set, Defect touching, D
   for (std::size_t f = 0; f < set.size(); ++f) boxes[f] = facet_box(m, set.facet(f), m.dim);
   bool any_fan = false;
   const auto decided = decided_fans(m, set, any_fan);
-  if (any_fan && !sweep_pairs(m, set, boxes, decided, [&](std::size_t i, std::size_t j) { return facets_meet(m, set.facet(i), set.facet(j)); }))
-    return {};
+  if (any_fan) {
+    // Pairs with a triangle of a decided fan: the sweep; the others: the grid over the others.
+    auto meet = [&](std::size_t i, std::size_t j) { return facets_meet(m, set.facet(i), set.facet(j)); };
+    std::vector<std::size_t> rest;
+    std::vector<Box> rest_boxes;
+    for (std::size_t f = 0; f < set.size(); ++f)
+      if (decided[f][2] < 0) rest.push_back(f), rest_boxes.push_back(boxes[f]);
+    if (!sweep_pairs(m, set, boxes, decided, meet) &&
+        !BoxGrid(rest_boxes, m.dim).any_pair([&](std::size_t i, std::size_t j) { return meet(rest[i], rest[j]); }))
+      return {};
+  }
   Finding crossing_found;
   BoxGrid(boxes, m.dim).any_pair([&](std::size_t i, std::size_t j) {
     Finding c = contact_of(m, set, i, j, touching, crossing, what);

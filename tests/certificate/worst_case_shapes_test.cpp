@@ -257,6 +257,11 @@ TEST(WorstCaseShapes, FansDecidedByTheirConesAgreeWithAllPairs) {
     const auto r = ring(s, k, 1, 0);
     fan(s, south, r), fan(s, north, r);
     expect(s, false, "book");
+    Soup apart = s;  // two more triangles, crossing each other far from the book and its fans
+    const io::Index p = apart.point(5, 0, 0), q = apart.point(6, 0, 0), t = apart.point(5, 1, 0);
+    apart.add(p, q, t);
+    apart.add(apart.point(5.2, 0.2, -1), apart.point(5.3, 0.2, 1), apart.point(5.2, 0.3, 1));
+    expect(apart, true, "book and, apart from it, two crossing triangles");
     Soup crossing;  // the upper fan on the same circle turned half a step: chords cross in z = 0 only
     const io::Index a = crossing.point(0, 0, -1), b = crossing.point(0, 0, 1);
     fan(crossing, a, ring(crossing, k, 1, 0)), fan(crossing, b, ring(crossing, k, 1, 0, 0.5));
