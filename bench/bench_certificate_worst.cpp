@@ -122,18 +122,19 @@ int main(int argc, char** argv) {
   if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
   auto sized = [&](double n) { return std::max(4, static_cast<int>(n * scale)); };
   // Full size: 200,000 triangles; 250,000 triangles and 61,250 hole points; 100,000
-  // triangles in 12,500 nested rings; the 3D fan at 2,000 tetrahedra (it is quadratic);
-  // 100,000 parts pinched at one vertex; 1,000 tetrahedra in every other wedge around one edge
-  // (the 3D embedding's box grid is quadratic on it, like book_3d); 400,000 triangles of a
+  // triangles in 12,500 nested rings; the 3D fan at 100,000 tetrahedra (its two fans of
+  // 100,000 boundary triangles are decided by their cones: no longer quadratic);
+  // 100,000 parts pinched at one vertex; 50,000 tetrahedra in every other wedge around one edge
+  // (100,000 boundary triangles on it, decided by the cones at its ends); 400,000 triangles of a
   // spiked star with 375,000 Steiner points rounded off their segments; a prism over a star
   // polygon of 1,000 corners against its TetGen facets, 3,000 tetrahedra (quadratic: the
   // contact check of the facets' cut triangles, whose boxes overlap).
   static Case cases[] = {{"star_fan_2d", star, sized(100000), {}, false},
                          {"holey_grid_2d_with_domain", holes, std::max(9, static_cast<int>(495 * std::sqrt(scale))), {}, false},
                          {"nested_rings_2d", rings, sized(12500), {}, false},
-                         {"book_3d", book, sized(2000), {}, false},
+                         {"book_3d", book, sized(100000), {}, false},
                          {"pinwheel_2d", pinwheel, sized(100000), {}, false},
-                         {"open_book_3d", open_book, sized(1000), {}, false},
+                         {"open_book_3d", open_book, sized(50000), {}, false},
                          {"spiked_star_2d_with_domain", spiked, sized(12500), {}, false},
                          {"star_prism_3d_with_facets", star_prism, sized(500), {}, false}};
   for (Case& c : cases) {

@@ -19,3 +19,4 @@ add_test(NAME certificate.tetgen_domains
 set_tests_properties(certificate.tetgen_domains PROPERTIES SKIP_RETURN_CODE 77 TIMEOUT 120 LABELS "certificate;interop")
 # exact_sum_test reads a header internal to certificate/ (its fixed-width and GMP paths).
 target_include_directories(certificate_exact_sum_test PRIVATE ${PROJECT_SOURCE_DIR}/certificate/src)
+target_include_directories(certificate_worst_case_shapes_test PRIVATE ${PROJECT_SOURCE_DIR}/certificate/src)

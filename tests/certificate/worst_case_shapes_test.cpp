@@ -5,11 +5,16 @@
 #include <gmpxx.h>
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cmath>
+#include <random>
+#include <vector>
 
 #include "certimesh/certificate/check_mesh.h"
 #include "certimesh/fuzz/worst_case_meshes.h"
+#include "certimesh/predicates/intersection/triangle_triangle_3d.h"
 #include "mesh_oracle.h"
+#include "stages.h"  // detail::first_contact, the 3D embedding check on a triangle soup
 
 namespace certimesh::certificate::test {
 namespace {
@@ -187,6 +192,182 @@ TEST(WorstCaseShapes, PrismOverAStarPolygonFacet) {
   notched.coordinates = m.coordinates;
   ASSERT_TRUE(testing::all_elements_positive(notched));
   EXPECT_EQ(defect_of(notched, &domain), "facet_off_domain_boundary");
+}
+
+// The 3D embedding check (detail::first_contact) on triangle soups built around fans of many
+// triangles at one vertex, the shapes its cone test and z sweep decide without the box grid
+// (proofs/mesh_certificate.md section 6), against the brute-force oracle: every pair tested
+// with the exact triangle-triangle predicate (shared ids: the allowed contact).
+struct Soup {
+  std::vector<double> xyz;
+  std::vector<io::Index> tri;
+  io::Index point(double x, double y, double z) {
+    xyz.insert(xyz.end(), {x, y, z});
+    return static_cast<io::Index>(xyz.size() / 3 - 1);
+  }
+  void add(io::Index a, io::Index b, io::Index c) { tri.insert(tri.end(), {a, b, c}); }
+  std::array<predicates::Vertex3, 3> triangle(std::size_t t) const {
+    std::array<predicates::Vertex3, 3> r;
+    for (int k = 0; k < 3; ++k) {
+      const io::Index v = tri[3 * t + static_cast<std::size_t>(k)];
+      r[static_cast<std::size_t>(k)] = {{xyz[3 * v], xyz[3 * v + 1], xyz[3 * v + 2]}, v};
+    }
+    return r;
+  }
+  bool brute_force_meet() const {
+    for (std::size_t i = 0; i < tri.size() / 3; ++i)
+      for (std::size_t j = i + 1; j < tri.size() / 3; ++j)
+        if (predicates::triangle_triangle_3d(triangle(i), triangle(j), predicates::IntersectionMode::exact) == predicates::Overlap::intersect)
+          return true;
+    return false;
+  }
+  bool checker_meet() const {
+    detail::MeshView m;
+    m.dim = 3;
+    m.xyz = xyz.data();
+    m.vertex_count = xyz.size() / 3;
+    detail::FacetSet set;
+    set.dim = 3;
+    set.vertices = tri;
+    for (std::size_t t = 0; t < tri.size() / 3; ++t) set.owner.push_back(static_cast<std::int64_t>(t));
+    return detail::first_contact(m, set, Defect::t_junction, Defect::boundary_intersection, "boundary triangle").defect != Defect::none;
+  }
+};
+
+// A ring of k points at height z around the z axis, radius r, angles offset by `turn` steps.
+std::vector<io::Index> ring(Soup& s, int k, double r, double z, double turn = 0) {
+  std::vector<io::Index> ids;
+  const double pi = std::acos(-1.0);
+  for (int i = 0; i < k; ++i) ids.push_back(s.point(r * std::cos(2 * pi * (i + turn) / k), r * std::sin(2 * pi * (i + turn) / k), z));
+  return ids;
+}
+void fan(Soup& s, io::Index apex, const std::vector<io::Index>& rim, bool closed = true) {
+  for (std::size_t i = 0; i + (closed ? 0 : 1) < rim.size(); ++i) s.add(apex, rim[i], rim[(i + 1) % rim.size()]);
+}
+
+TEST(WorstCaseShapes, FansDecidedByTheirConesAgreeWithAllPairs) {
+  const int k = 48;  // above the cone test's threshold of 32 triangles at a vertex
+  auto expect = [](const Soup& s, bool meet, const char* what) {
+    ASSERT_EQ(s.brute_force_meet(), meet) << what << ": the oracle";
+    EXPECT_EQ(s.checker_meet(), meet) << what;
+  };
+  {  // book_3d's boundary: the lower and upper fans, meeting only along the chords in z = 0
+    Soup s;
+    const io::Index south = s.point(0, 0, -1), north = s.point(0, 0, 1);
+    const auto r = ring(s, k, 1, 0);
+    fan(s, south, r), fan(s, north, r);
+    expect(s, false, "book");
+    Soup apart = s;  // two more triangles, crossing each other far from the book and its fans
+    const io::Index p = apart.point(5, 0, 0), q = apart.point(6, 0, 0), t = apart.point(5, 1, 0);
+    apart.add(p, q, t);
+    apart.add(apart.point(5.2, 0.2, -1), apart.point(5.3, 0.2, 1), apart.point(5.2, 0.3, 1));
+    expect(apart, true, "book and, apart from it, two crossing triangles");
+    Soup crossing;  // the upper fan on the same circle turned half a step: chords cross in z = 0 only
+    const io::Index a = crossing.point(0, 0, -1), b = crossing.point(0, 0, 1);
+    fan(crossing, a, ring(crossing, k, 1, 0)), fan(crossing, b, ring(crossing, k, 1, 0, 0.5));
+    expect(crossing, true, "book with its pages meeting only in the plane z = 0");
+    Soup inside;  // the upper fan's rim at radius 1/2 in z = 0: touches nothing
+    const io::Index c = inside.point(0, 0, -1), d = inside.point(0, 0, 1);
+    fan(inside, c, ring(inside, k, 1, 0)), fan(inside, d, ring(inside, k, 0.5, 0, 0.5));
+    expect(inside, false, "book whose upper rim lies inside the lower one in z = 0");
+  }
+  {  // one rim vertex pulled past its neighbour's ray: two fan triangles overlap beyond the apex
+    Soup s;
+    const io::Index apex = s.point(0, 0, -1);
+    const auto r = ring(s, k, 1, 0);
+    Soup along = s, outside = s;
+    const double pi = std::acos(-1.0);  // vertex 5 moved on the circle to between 6 and 7: chords 4-5 and 6-7 cross
+    s.xyz[3 * r[5]] = std::cos(2 * pi * 6.5 / k), s.xyz[3 * r[5] + 1] = std::sin(2 * pi * 6.5 / k);
+    fan(s, apex, r);
+    expect(s, true, "fan with one pair meeting beyond its apex");
+    // Vertex 5 moved out to 1.25 times vertex 7: the wedges around the axis overlap, yet the
+    // triangles pass outside one another (the cone test cannot decide it; the grid does).
+    outside.xyz[3 * r[5]] = 1.25 * outside.xyz[3 * r[7]], outside.xyz[3 * r[5] + 1] = 1.25 * outside.xyz[3 * r[7] + 1];
+    fan(outside, apex, r);
+    expect(outside, false, "fan folded over itself without meeting");
+    // Rim vertex 5 on the ray from the apex through vertex 7 (1.5 times as far, at z = 1/2):
+    // the edges to 5 and 7 overlap along that ray, a contact only at collinear edges.
+    along.xyz[3 * r[5]] = 1.5 * along.xyz[3 * r[7]], along.xyz[3 * r[5] + 1] = 1.5 * along.xyz[3 * r[7] + 1], along.xyz[3 * r[5] + 2] = 0.5;
+    fan(along, apex, r);
+    expect(along, true, "fan with two edges along one ray from its apex");
+  }
+  {  // a double cone: two fans at one apex, one up, one down, touching only at the apex
+    Soup s;
+    const io::Index apex = s.point(0, 0, 0);
+    fan(s, apex, ring(s, k, 1, 1)), fan(s, apex, ring(s, k, 1, -1));
+    expect(s, false, "double cone touching only at its apex");
+    Soup same_side;  // both cones up, the inner one steeper: they meet only at the apex too
+    const io::Index b = same_side.point(0, 0, 0);
+    fan(same_side, b, ring(same_side, k, 1, 1)), fan(same_side, b, ring(same_side, k, 0.5, 1, 0.5));
+    expect(same_side, false, "nested cones at one apex");
+    Soup crossing;  // the inner cone's rim outside the outer cone on one side: crosses it
+    const io::Index c = crossing.point(0, 0, 0);
+    fan(crossing, c, ring(crossing, k, 1, 1));
+    auto inner = ring(crossing, k, 0.5, 1, 0.5);
+    crossing.xyz[3 * inner[3]] *= 3, crossing.xyz[3 * inner[3] + 1] *= 3;
+    fan(crossing, c, inner);
+    expect(crossing, true, "a cone at the apex leaving the other");
+  }
+  {  // a flat fan (star_prism_3d's bottom) and one more triangle at its centre in its plane
+    Soup s;
+    const io::Index centre = s.point(0, 0, 0);
+    const auto r = ring(s, k, 1, 0);
+    fan(s, centre, r);
+    expect(s, false, "flat fan");
+    Soup overlap = s;
+    overlap.add(centre, r[2], r[4]);  // covers fan triangles 2 and 3: coplanar overlap at the centre
+    expect(overlap, true, "coplanar triangles overlapping at the centre");
+    Soup open = s;  // the fan open, one more triangle in the gap touching the fan along two edges
+    open.tri.resize(open.tri.size() - 6);
+    open.add(centre, r[k - 2], r[0]);
+    expect(open, false, "flat fan with a wide triangle in its gap");
+    Soup through = s;  // a triangle through the plane, meeting the fan only at the centre
+    const io::Index up = through.point(0.3, 0.2, 1), down = through.point(0.1, -0.3, 1);
+    through.add(centre, up, down);
+    expect(through, false, "a triangle standing on the centre");
+    const io::Index low = through.point(0.2, 0.1, -1);
+    through.add(centre, up, low);  // crosses the fan's plane beyond the centre
+    expect(through, true, "a triangle through the fan's plane at its centre");
+  }
+  {  // open_book_3d's spine: 2k pages on the edge S N and k bottoms and tops
+    Soup s;
+    const io::Index south = s.point(0, 0, -1), north = s.point(0, 0, 1);
+    const auto r = ring(s, 2 * k, 1, 0);
+    for (int i = 0; i < k; ++i) {
+      const io::Index a = r[static_cast<std::size_t>(2 * i)], b = r[static_cast<std::size_t>(2 * i + 1)];
+      s.add(south, north, a), s.add(south, b, north), s.add(south, a, b), s.add(north, b, a);
+    }
+    expect(s, false, "open book");
+    Soup doubled = s;  // one page twice, on one side of the spine: coplanar along the edge
+    const io::Index beyond = doubled.point(2 * doubled.xyz[3 * r[0]], 2 * doubled.xyz[3 * r[0] + 1], 0);
+    doubled.add(south, north, beyond);
+    expect(doubled, true, "two pages on the spine in one half-plane");
+  }
+  // Random: a fan of k triangles at the origin over a jittered ring on small integers (many
+  // ties: collinear rim points, rims in one plane with the apex), some rim points moved at random.
+  std::mt19937 rng(12);
+  int meeting = 0;
+  for (int trial = 0; trial < 60; ++trial) {
+    Soup s;
+    const io::Index apex = s.point(0, 0, 0);
+    std::vector<io::Index> rim;
+    const double pi = std::acos(-1.0);
+    for (int i = 0; i < k; ++i) {
+      const double a = 2 * pi * i / k;
+      rim.push_back(s.point(std::round(8 * std::cos(a)), std::round(8 * std::sin(a)), double(rng() % 3) - (trial % 2)));
+    }
+    for (int moved = static_cast<int>(rng() % 3); moved > 0; --moved) {
+      const io::Index v = rim[rng() % rim.size()];
+      for (int c = 0; c < 3; ++c) s.xyz[3 * v + static_cast<std::size_t>(c)] = double(static_cast<int>(rng() % 9) - 4);
+    }
+    fan(s, apex, rim, trial % 3 != 0);
+    if (trial % 4 == 0) s.add(apex, rim[rng() % rim.size()], s.point(double(rng() % 5) - 2, double(rng() % 5) - 2, 3));
+    const bool meet = s.brute_force_meet();
+    meeting += meet;
+    EXPECT_EQ(s.checker_meet(), meet) << "random fan " << trial;
+  }
+  EXPECT_GT(meeting, 5);
+  EXPECT_LT(meeting, 55);
 }
 }  // namespace
 }  // namespace certimesh::certificate::test
