@@ -8,6 +8,7 @@
 #include <string>
 
 #include "certimesh/fuzz/campaign/case_seed.h"
+#include "certimesh/fuzz/campaign/named_target.h"
 #include "certimesh/fuzz/recipes.h"
 #include "certimesh/predicates/intersection/segment_segment_2d.h"
 #include "certimesh/predicates/intersection/tetrahedron_triangle.h"
@@ -187,12 +188,10 @@ std::optional<Finding> replay_test(const IntersectionKernel& k, const Test<D, NA
   return check(k, t, pts);
 }
 
-class IntersectionTarget final : public Target {
+class IntersectionTarget final : public NamedTarget {
  public:
   IntersectionTarget(const IntersectionKernel& kernel, std::string name, std::string description)
-      : kernel_(kernel), name_(std::move(name)), description_(std::move(description)) {}
-  std::string_view name() const override { return name_; }
-  std::string_view description() const override { return description_; }
+      : NamedTarget(std::move(name), std::move(description)), kernel_(kernel) {}
   std::optional<Finding> run_case(std::uint64_t seed) const override {
     SplitMixSource s(seed);
     switch (s.below(5)) {
@@ -216,7 +215,6 @@ class IntersectionTarget final : public Target {
 
  private:
   IntersectionKernel kernel_;
-  std::string name_, description_;
 };
 
 }  // namespace
