@@ -22,6 +22,7 @@
 #include "certimesh/fuzz/campaign/case_seed.h"
 #include "certimesh/fuzz/campaign/delaunay2d_target.h"
 #include "certimesh/fuzz/campaign/intersection_target.h"
+#include "certimesh/fuzz/campaign/mesh2d_target.h"
 #include "certimesh/fuzz/campaign/predicates_target.h"
 #include "certimesh/fuzz/campaign/readers_target.h"
 #include "certimesh/fuzz/campaign/reproducer.h"
@@ -260,14 +261,26 @@ certimesh::io::MeshData flipped_once(const certimesh::io::MeshData& points) {
   return m;
 }
 
-TEST(Campaign, ReaderAndDelaunayMutantsAreFoundAndReplay) {
+// A pipeline whose last local modification skips its validity test: the last vertex (an
+// interior or Steiner one) is moved to its mirror image through vertex 0, a boundary vertex.
+certimesh::io::MeshData unchecked_last_move(const certimesh::generators::PlanarDomain& domain,
+                                            certimesh::generators::MeshAlgorithm2 algorithm) {
+  auto m = fc::certimesh_mesh2d_kernel().mesh(domain, algorithm);
+  const std::size_t last = m.coordinates.size() - 2;
+  for (std::size_t k = 0; k < 2; ++k) m.coordinates[last + k] = 2 * m.coordinates[k] - m.coordinates[last + k];
+  return m;
+}
+
+TEST(Campaign, ReaderDelaunayAndMeshMutantsAreFoundAndReplay) {
   const struct {
     std::unique_ptr<fc::Target> mutant, real;
     const char* expected;
   } cases[] = {{fc::make_readers_target({float_coordinates_reader}, "readers-float-coordinates", "mutant"), fc::make_readers_target(),
                 "readers ."},  // inf for the coordinates near 2^1000, other bytes for the rest
                {fc::make_delaunay2d_target({flipped_once}, "delaunay2d-inverted-flip", "mutant"), fc::make_delaunay2d_target(),
-                "circumcircle"}};
+                "circumcircle"},
+               {fc::make_mesh2d_target({unchecked_last_move}, "mesh2d-unchecked-move", "mutant"), fc::make_mesh2d_target(),
+                "mesh2d: the certificate refuses the mesh"}};
   for (const auto& c : cases) {
     SCOPED_TRACE(std::string(c.mutant->name()));
     const auto r = campaign_against(*c.mutant);
@@ -283,9 +296,9 @@ TEST(Campaign, ReaderAndDelaunayMutantsAreFoundAndReplay) {
 
 TEST(Campaign, RealKernelRunsCleanForAFixedSeed) {
   const auto registry = fc::builtin_targets();
-  ASSERT_EQ(registry.all().size(), 4u);
+  ASSERT_EQ(registry.all().size(), 5u);
   for (const auto& [name, cases] : {std::pair<const char*, std::uint64_t>{"predicates", 5000}, {"intersection", 1000},
-                                    {"readers", 200}, {"delaunay2d", 1000}}) {
+                                    {"readers", 200}, {"delaunay2d", 1000}, {"mesh2d", 8}}) {
     const fc::Target* target = registry.find(name);
     ASSERT_NE(target, nullptr) << name;
     const auto r = run(*target, cases, 2);

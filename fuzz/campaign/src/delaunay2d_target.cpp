@@ -225,10 +225,9 @@ std::optional<Finding> check(const DelaunayKernel& kernel, const std::vector<IPo
   return std::nullopt;
 }
 
-class Delaunay2dTarget final : public NamedTarget {
+class Delaunay2dTarget final : public KernelTarget<DelaunayKernel> {
  public:
-  Delaunay2dTarget(const DelaunayKernel& kernel, std::string name, std::string description)
-      : NamedTarget(std::move(name), std::move(description)), kernel_(kernel) {}
+  using KernelTarget::KernelTarget;
   std::optional<Finding> run_case(std::uint64_t seed) const override {
     SplitMixSource s(seed);
     const std::vector<IPoint> p = draw_points(s);
@@ -251,8 +250,6 @@ class Delaunay2dTarget final : public NamedTarget {
     return check(kernel_, p, k);
   }
 
- private:
-  DelaunayKernel kernel_;
 };
 
 }  // namespace

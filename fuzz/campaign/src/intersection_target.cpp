@@ -188,10 +188,9 @@ std::optional<Finding> replay_test(const IntersectionKernel& k, const Test<D, NA
   return check(k, t, pts);
 }
 
-class IntersectionTarget final : public NamedTarget {
+class IntersectionTarget final : public KernelTarget<IntersectionKernel> {
  public:
-  IntersectionTarget(const IntersectionKernel& kernel, std::string name, std::string description)
-      : NamedTarget(std::move(name), std::move(description)), kernel_(kernel) {}
+  using KernelTarget::KernelTarget;
   std::optional<Finding> run_case(std::uint64_t seed) const override {
     SplitMixSource s(seed);
     switch (s.below(5)) {
@@ -213,8 +212,6 @@ class IntersectionTarget final : public NamedTarget {
     throw MalformedPayload("unknown intersection test '" + test + "' (seg_seg2d, tri_seg2d, tri_seg3d, tet_tri, tri_tri3d)");
   }
 
- private:
-  IntersectionKernel kernel_;
 };
 
 }  // namespace

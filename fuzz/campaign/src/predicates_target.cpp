@@ -210,10 +210,9 @@ std::optional<Finding> replay_points(const PredicateKernel& k, const Calls<N, Di
   return check(k, c, p);
 }
 
-class PredicatesTarget final : public NamedTarget {
+class PredicatesTarget final : public KernelTarget<PredicateKernel> {
  public:
-  PredicatesTarget(const PredicateKernel& kernel, std::string name, std::string description)
-      : NamedTarget(std::move(name), std::move(description)), kernel_(kernel) {}
+  using KernelTarget::KernelTarget;
   std::optional<Finding> run_case(std::uint64_t seed) const override { return run_predicate_case(kernel_, seed); }
   std::optional<Finding> replay(std::string_view payload) const override {
     PayloadReader in(payload);
@@ -225,8 +224,6 @@ class PredicatesTarget final : public NamedTarget {
     throw MalformedPayload("unknown predicate '" + predicate + "' (orient2d, orient3d, incircle, insphere)");
   }
 
- private:
-  PredicateKernel kernel_;
 };
 
 }  // namespace

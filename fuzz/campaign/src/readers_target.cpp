@@ -505,10 +505,9 @@ std::optional<Finding> check(const ReaderKernel& kernel, const Input& in) {
   return std::nullopt;
 }
 
-class ReadersTarget final : public NamedTarget {
+class ReadersTarget final : public KernelTarget<ReaderKernel> {
  public:
-  ReadersTarget(const ReaderKernel& kernel, std::string name, std::string description)
-      : NamedTarget(std::move(name), std::move(description)), kernel_(kernel) {}
+  using KernelTarget::KernelTarget;
   std::optional<Finding> run_case(std::uint64_t seed) const override {
     SplitMixSource s(seed);
     Input in = draw_valid_input(s);
@@ -537,8 +536,6 @@ class ReadersTarget final : public NamedTarget {
     return check(kernel_, in);
   }
 
- private:
-  ReaderKernel kernel_;
 };
 
 }  // namespace

@@ -1,6 +1,7 @@
-// The part every campaign target shares: its name and its one-line description (a test
-// builds a mutant as the same target under another name). Targets derive from it and write
-// only run_case and replay.
+// The part every campaign target shares: its name, its one-line description and the kernel
+// it calls (a struct of function pointers: a test builds a mutant as the same target over a
+// broken kernel, under another name). Targets derive from KernelTarget and write only
+// run_case and replay.
 #pragma once
 
 #include <string>
@@ -19,6 +20,16 @@ class NamedTarget : public Target {
 
  private:
   std::string name_, description_;
+};
+
+template <class Kernel>
+class KernelTarget : public NamedTarget {
+ public:
+  KernelTarget(const Kernel& kernel, std::string name, std::string description)
+      : NamedTarget(std::move(name), std::move(description)), kernel_(kernel) {}
+
+ protected:
+  Kernel kernel_;
 };
 
 }  // namespace certimesh::fuzz::campaign
