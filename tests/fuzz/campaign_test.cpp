@@ -298,7 +298,7 @@ TEST(Campaign, RealKernelRunsCleanForAFixedSeed) {
   const auto registry = fc::builtin_targets();
   ASSERT_EQ(registry.all().size(), 5u);
   for (const auto& [name, cases] : {std::pair<const char*, std::uint64_t>{"predicates", 5000}, {"intersection", 1000},
-                                    {"readers", 200}, {"delaunay2d", 1000}, {"mesh2d", 8}}) {
+                                    {"readers", 100}, {"delaunay2d", 1000}, {"mesh2d", 8}}) {
     const fc::Target* target = registry.find(name);
     ASSERT_NE(target, nullptr) << name;
     const auto r = run(*target, cases, 2);
