@@ -39,6 +39,7 @@
 #include "certimesh/io/off_format.h"
 #include "certimesh/io/stl_format.h"
 #include "certimesh/io/triangle_format.h"
+#include "mesh_data_invariants.h"
 
 namespace {
 
@@ -49,53 +50,8 @@ namespace io = certimesh::io;
   std::abort();
 }
 
-void check_cells(const std::vector<io::Index>& cells, const std::vector<io::Label>& labels,
-                 std::size_t corners, std::size_t points) {
-  if (cells.size() % corners != 0) fail("cell array is not a multiple of its corner count");
-  if (!labels.empty() && labels.size() != cells.size() / corners) fail("label count mismatch");
-  for (const io::Index i : cells) {
-    if (i >= points) fail("index out of range accepted");
-  }
-}
-
-void check_finite(const std::vector<double>& values) {
-  for (const double v : values) {
-    if (!std::isfinite(v)) fail("non-finite number accepted");
-  }
-}
-
 void check_well_formed(const io::MeshData& m) {
-  if (m.dimension != 2 && m.dimension != 3) fail("dimension not 2 or 3");
-  const auto dim = static_cast<std::size_t>(m.dimension);
-  if (m.coordinates.size() % dim != 0) fail("coordinates not a multiple of the dimension");
-  check_finite(m.coordinates);
-  check_finite(m.holes);
-  check_finite(m.region_points);
-  check_finite(m.region_attributes);
-  const std::size_t n = m.point_count();
-  if (!m.point_labels.empty() && m.point_labels.size() != n) fail("point label count mismatch");
-  check_cells(m.segments, m.segment_labels, 2, n);
-  check_cells(m.triangles, m.triangle_labels, 3, n);
-  check_cells(m.tetrahedra, m.tetrahedron_labels, 4, n);
-  check_finite(m.region_max_measures);
-  if (!m.region_max_measures.empty() && m.region_max_measures.size() != m.region_attributes.size()) fail("region constraint count mismatch");
-  // TetGen facets: offsets increasing and closing every array, corners existing and distinct
-  // within a polygon, one label per facet or none.
-  const io::FacetList& f = m.facets;
-  check_finite(f.holes);
-  if (f.hole_end.size() != f.facet_count() || (!f.labels.empty() && f.labels.size() != f.facet_count())) fail("facet arrays differ in length");
-  for (std::size_t i = 0; i < f.facet_count(); ++i)
-    if (f.facet_end[i] < f.polygon_begin(i) || f.hole_end[i] < f.hole_begin(i)) fail("facet offsets decrease");
-  if (f.facet_count() > 0 && (f.facet_end.back() != f.polygon_count() || 3 * f.hole_end.back() != f.holes.size())) fail("facet offsets do not close");
-  for (std::size_t p = 0; p < f.polygon_count(); ++p) {
-    if (f.polygon_end[p] <= f.corner_begin(p)) fail("a polygon without corners");
-    for (std::uint64_t a = f.corner_begin(p); a < f.polygon_end[p]; ++a) {
-      if (f.corners[a] >= n) fail("corner out of range accepted");
-      for (std::uint64_t b = f.corner_begin(p); b < a; ++b)
-        if (f.corners[a] == f.corners[b]) fail("repeated corner accepted");
-    }
-  }
-  if (f.polygon_count() > 0 && f.polygon_end.back() != f.corners.size()) fail("polygon offsets do not close");
+  if (const auto defect = certimesh::testing::mesh_data_defect(m)) fail(defect->c_str());
 }
 
 bool same_bits(const std::vector<double>& a, const std::vector<double>& b) {

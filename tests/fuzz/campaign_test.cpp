@@ -20,10 +20,14 @@
 
 #include "certimesh/fuzz/campaign/campaign.h"
 #include "certimesh/fuzz/campaign/case_seed.h"
+#include "certimesh/fuzz/campaign/delaunay2d_target.h"
 #include "certimesh/fuzz/campaign/intersection_target.h"
+#include "certimesh/fuzz/campaign/mesh2d_target.h"
 #include "certimesh/fuzz/campaign/predicates_target.h"
+#include "certimesh/fuzz/campaign/readers_target.h"
 #include "certimesh/fuzz/campaign/reproducer.h"
 #include "certimesh/fuzz/recipes.h"
+#include "certimesh/generators/delaunay/point_set_2.h"
 #include "certimesh/predicates/filter_constants.h"
 #include "certimesh/predicates/incircle.h"
 #include "certimesh/predicates/intersection/segment_segment_2d.h"
@@ -226,10 +230,75 @@ TEST(Campaign, IntersectionMutantsAreFoundAndReplay) {
   }
 }
 
+// A reader that parses numbers as floats, not doubles: every coordinate rounded to float.
+// The round trip cannot see it (the rounded data re-reads the same); the invariants see the
+// huge ones become inf, and re-writing an unmutated file certimesh wrote sees the others.
+certimesh::io::MeshData float_coordinates_reader(const std::string& ext, const std::string& contents,
+                                                 const std::vector<std::pair<std::string, std::string>>& companions) {
+  auto m = fc::certimesh_reader_kernel().read(ext, contents, companions);
+  for (double& v : m.coordinates) v = static_cast<double>(static_cast<float>(v));
+  return m;
+}
+
+// A Delaunay triangulation whose flip test is inverted once: the first interior edge whose
+// quadrilateral is strictly convex is flipped, from Delaunay to (usually) not.
+certimesh::io::MeshData flipped_once(const certimesh::io::MeshData& points) {
+  auto m = certimesh::generators::delaunay_of_points(points);
+  const auto pt = [&](std::uint32_t i) { return P2{m.coordinates[2 * i], m.coordinates[2 * i + 1]}; };
+  auto& t = m.triangles;
+  for (std::size_t a = 0; a < m.triangle_count(); ++a)
+    for (std::size_t i = 0; i < 3; ++i)
+      for (std::size_t b = 0; b < m.triangle_count(); ++b)
+        for (std::size_t j = 0; j < 3; ++j) {
+          const auto u = t[3 * a + i], v = t[3 * a + (i + 1) % 3], c = t[3 * a + (i + 2) % 3];
+          if (t[3 * b + j] != v || t[3 * b + (j + 1) % 3] != u) continue;
+          const auto d = t[3 * b + (j + 2) % 3];  // triangles (u v c), (v u d): flip uv to cd
+          if (pr::orient2d(pt(u), pt(d), pt(c)) != pr::Sign::positive || pr::orient2d(pt(d), pt(v), pt(c)) != pr::Sign::positive) continue;
+          t[3 * a] = u, t[3 * a + 1] = d, t[3 * a + 2] = c;
+          t[3 * b] = d, t[3 * b + 1] = v, t[3 * b + 2] = c;
+          return m;
+        }
+  return m;
+}
+
+// A pipeline whose last local modification skips its validity test: the last vertex (an
+// interior or Steiner one) is moved to its mirror image through vertex 0, a boundary vertex.
+certimesh::io::MeshData unchecked_last_move(const certimesh::generators::PlanarDomain& domain,
+                                            certimesh::generators::MeshAlgorithm2 algorithm) {
+  auto m = fc::certimesh_mesh2d_kernel().mesh(domain, algorithm);
+  const std::size_t last = m.coordinates.size() - 2;
+  for (std::size_t k = 0; k < 2; ++k) m.coordinates[last + k] = 2 * m.coordinates[k] - m.coordinates[last + k];
+  return m;
+}
+
+TEST(Campaign, ReaderDelaunayAndMeshMutantsAreFoundAndReplay) {
+  const struct {
+    std::unique_ptr<fc::Target> mutant, real;
+    const char* expected;
+  } cases[] = {{fc::make_readers_target({float_coordinates_reader}, "readers-float-coordinates", "mutant"), fc::make_readers_target(),
+                "readers ."},  // inf for the coordinates near 2^1000, other bytes for the rest
+               {fc::make_delaunay2d_target({flipped_once}, "delaunay2d-inverted-flip", "mutant"), fc::make_delaunay2d_target(),
+                "circumcircle"},
+               {fc::make_mesh2d_target({unchecked_last_move}, "mesh2d-unchecked-move", "mutant"), fc::make_mesh2d_target(),
+                "mesh2d: the certificate refuses the mesh"}};
+  for (const auto& c : cases) {
+    SCOPED_TRACE(std::string(c.mutant->name()));
+    const auto r = campaign_against(*c.mutant);
+    ASSERT_TRUE(r.has_value());
+    const auto& f = r->findings.front();
+    EXPECT_NE(f.finding.message.find(c.expected), std::string::npos) << f.finding.message;
+    EXPECT_LT(f.case_index, 200u) << "found, but not quickly";
+    EXPECT_EQ(c.mutant->replay(f.finding.payload), f.finding);
+    EXPECT_EQ(c.mutant->run_case(f.case_seed), f.finding);
+    EXPECT_EQ(c.real->replay(f.finding.payload), std::nullopt);
+  }
+}
+
 TEST(Campaign, RealKernelRunsCleanForAFixedSeed) {
   const auto registry = fc::builtin_targets();
-  ASSERT_EQ(registry.all().size(), 2u);
-  for (const auto& [name, cases] : {std::pair<const char*, std::uint64_t>{"predicates", 5000}, {"intersection", 1000}}) {
+  ASSERT_EQ(registry.all().size(), 5u);
+  for (const auto& [name, cases] : {std::pair<const char*, std::uint64_t>{"predicates", 5000}, {"intersection", 1000},
+                                    {"readers", 100}, {"delaunay2d", 1000}, {"mesh2d", 8}}) {
     const fc::Target* target = registry.find(name);
     ASSERT_NE(target, nullptr) << name;
     const auto r = run(*target, cases, 2);

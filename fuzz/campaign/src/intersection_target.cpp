@@ -8,6 +8,7 @@
 #include <string>
 
 #include "certimesh/fuzz/campaign/case_seed.h"
+#include "certimesh/fuzz/campaign/named_target.h"
 #include "certimesh/fuzz/recipes.h"
 #include "certimesh/predicates/intersection/segment_segment_2d.h"
 #include "certimesh/predicates/intersection/tetrahedron_triangle.h"
@@ -187,12 +188,9 @@ std::optional<Finding> replay_test(const IntersectionKernel& k, const Test<D, NA
   return check(k, t, pts);
 }
 
-class IntersectionTarget final : public Target {
+class IntersectionTarget final : public KernelTarget<IntersectionKernel> {
  public:
-  IntersectionTarget(const IntersectionKernel& kernel, std::string name, std::string description)
-      : kernel_(kernel), name_(std::move(name)), description_(std::move(description)) {}
-  std::string_view name() const override { return name_; }
-  std::string_view description() const override { return description_; }
+  using KernelTarget::KernelTarget;
   std::optional<Finding> run_case(std::uint64_t seed) const override {
     SplitMixSource s(seed);
     switch (s.below(5)) {
@@ -214,9 +212,6 @@ class IntersectionTarget final : public Target {
     throw MalformedPayload("unknown intersection test '" + test + "' (seg_seg2d, tri_seg2d, tri_seg3d, tet_tri, tri_tri3d)");
   }
 
- private:
-  IntersectionKernel kernel_;
-  std::string name_, description_;
 };
 
 }  // namespace

@@ -43,6 +43,9 @@ class PayloadReader {
     return v;
   }
 
+  /// True when only spaces are left.
+  bool at_end() const { return text_.find_first_not_of(' ', pos_) == std::string_view::npos; }
+
   void expect_end() {
     while (pos_ < text_.size() && text_[pos_] == ' ') ++pos_;
     if (pos_ < text_.size()) throw MalformedPayload("unexpected text after " + std::to_string(words_) + " words: '" + std::string(text_.substr(pos_)) + "'");

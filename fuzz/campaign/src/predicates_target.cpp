@@ -10,6 +10,7 @@
 #include <string_view>
 
 #include "certimesh/fuzz/campaign/case_seed.h"
+#include "certimesh/fuzz/campaign/named_target.h"
 #include "certimesh/fuzz/recipes.h"
 #include "certimesh/predicates/detail/exact_stages.h"
 #include "certimesh/predicates/incircle.h"
@@ -209,12 +210,9 @@ std::optional<Finding> replay_points(const PredicateKernel& k, const Calls<N, Di
   return check(k, c, p);
 }
 
-class PredicatesTarget final : public Target {
+class PredicatesTarget final : public KernelTarget<PredicateKernel> {
  public:
-  PredicatesTarget(const PredicateKernel& kernel, std::string name, std::string description)
-      : kernel_(kernel), name_(std::move(name)), description_(std::move(description)) {}
-  std::string_view name() const override { return name_; }
-  std::string_view description() const override { return description_; }
+  using KernelTarget::KernelTarget;
   std::optional<Finding> run_case(std::uint64_t seed) const override { return run_predicate_case(kernel_, seed); }
   std::optional<Finding> replay(std::string_view payload) const override {
     PayloadReader in(payload);
@@ -226,9 +224,6 @@ class PredicatesTarget final : public Target {
     throw MalformedPayload("unknown predicate '" + predicate + "' (orient2d, orient3d, incircle, insphere)");
   }
 
- private:
-  PredicateKernel kernel_;
-  std::string name_, description_;
 };
 
 }  // namespace

@@ -56,7 +56,7 @@ class TargetRegistry {
   std::vector<std::unique_ptr<Target>> targets_;
 };
 
-/// The targets `certimesh fuzz` ships: predicates, intersection.
+/// The targets `certimesh fuzz` ships: predicates, intersection, readers, delaunay2d, mesh2d.
 TargetRegistry builtin_targets();
 
 }  // namespace certimesh::fuzz::campaign
