@@ -86,7 +86,7 @@ MeshResult3 mesh_convex_hull_3(const io::MeshData& points, const MeshOptions3& o
     result.stats.refinement = refine_tetrahedra_3(solid, refinement_options(options), progress);
     clock.stop("refinement");
   }
-  if (options.improve) {
+  if (options.refine && options.improve) {  // unrefined, the Delaunay tetrahedralization is the answer
     result.stats.improvement = improve_tetrahedra_3(solid, static_cast<std::uint32_t>(points.point_count()));
     clock.stop("improvement");
   }

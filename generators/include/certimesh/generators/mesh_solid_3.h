@@ -42,7 +42,8 @@ struct MeshOptions3 {
   /// --refine-surface: Steiner points of the recovery may stay on the surface (each the
   /// rounding of an exact point of its edge or triangle); default: none on it.
   bool refine_surface = false;
-  /// Sliver removal after refinement (quality_improvement_3.h; --no-improve turns it off).
+  /// Sliver removal after refinement (quality_improvement_3.h; --no-improve turns it off). A
+  /// point set that is not refined keeps its Delaunay tetrahedralization.
   bool improve = true;
 };
 
