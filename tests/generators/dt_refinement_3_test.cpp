@@ -416,6 +416,23 @@ TEST(SliverRemoval3, RandomOperationSequencesStayCertifiedAndKeepTheSolid) {
   }
 }
 
+TEST(SliverRemoval3, TheDriverKeepsRegionsConstrainedFacesAndInputPoints) {
+  std::uint32_t first_free = 0;
+  Tetrahedralization3 m = sliver_test_mesh(7, &first_free);
+  const Tetrahedralization3 start = m;
+  const io::MeshData domain = surface_of(m);
+  const auto stats = generators::improve_tetrahedra_3(m, first_free);
+  EXPECT_GT(stats.edge_removals + stats.node_shifts, 0u);
+  expect_certified(m, domain);
+  EXPECT_EQ(exact_volume(m), exact_volume(start));
+  EXPECT_EQ(boundary_geometry(m), boundary_geometry(start));
+  EXPECT_EQ(faces_where(m, true), faces_where(start, true));
+  EXPECT_TRUE(holds_face(m, start.constrained_faces.at(0)));
+  for (std::uint32_t v = 0; v < first_free; ++v) EXPECT_EQ(m.points[v].x, start.points[v].x);
+  EXPECT_GE(worst_of(m), worst_of(start));
+  EXPECT_LT(worst_of(start), 0.2);  // the fixture has slivers to remove
+}
+
 TEST(SliverRemoval3, RefinedCubeLosesItsSliversAndKeepsItsBoundary) {
   Tetrahedralization3 m = delaunay_of(grid(2, 0.5));
   const io::MeshData domain = surface_of(m);
