@@ -134,6 +134,15 @@ ImprovementStats3 improve_tetrahedra_3(Tetrahedralization3& solid, std::uint32_t
     }
     if (queue.size() == 0) break;
     ++stats.passes;
+    // The fixed vertices of this submesh, once: those of its constrained facets (its open
+    // facets among them) and the input's.
+    std::vector<std::uint8_t> fixed(mesh.vertex_slot_count(), 0);
+    for (std::uint32_t v = 0; v < std::min<std::size_t>(first_movable_vertex, fixed.size()); ++v) fixed[v] = 1;
+    for (std::uint32_t e = 0; e < mesh.element_slot_count(); ++e)
+      for (int i = 0; i < 4; ++i)
+        if (topology::is_constrained_facet(mesh, ElementId{e}, i))
+          for (const VertexId v : mesh.facet(ElementId{e}, i)) fixed[v.value] = 1;
+    o.fixed_vertices = fixed;
     const std::uint64_t budget = options.max_operations ? options.max_operations : 4 * mesh.element_count() + 16;
     std::uint64_t committed = 0;
     for (std::uint64_t attempt = 0; attempt < budget && queue.size() > 0; ++attempt) {
@@ -151,6 +160,7 @@ ImprovementStats3 improve_tetrahedra_3(Tetrahedralization3& solid, std::uint32_t
         if (q < options.target_quality) queue.insert(a, q);
       }
     }
+    o.fixed_vertices = {};
     merge_back(part, solid);
     stats.worst_after = measure();
     if (committed == 0) break;

@@ -52,6 +52,7 @@ bool is_constrained_facet(const TetrahedralMesh3& mesh, ElementId e, int i) {
 bool is_fixed_vertex(const TetrahedralMesh3& mesh, VertexId v, const std::vector<ElementId>& star,
                      const LocalModificationOptions3& options) {
   if (v.value < options.first_movable_vertex || star.empty()) return true;
+  if (!options.fixed_vertices.empty()) return v.value >= options.fixed_vertices.size() || options.fixed_vertices[v.value];
   if (star.size() != mesh.incident_element_count(v)) return true;  // a pinched star
   for (const ElementId e : star) {
     const int own = local_index(mesh.vertices(e), v);
@@ -171,6 +172,8 @@ std::optional<LocalChange3> try_edge_removal(TetrahedralMesh3& mesh, ElementId e
 }
 
 std::optional<LocalChange3> try_node_shift(TetrahedralMesh3& mesh, VertexId v, const LocalModificationOptions3& options) {
+  if (!options.fixed_vertices.empty() && (v.value >= options.fixed_vertices.size() || options.fixed_vertices[v.value]))
+    return std::nullopt;  // before the star walk: most corners of boundary slivers are fixed
   const std::vector<ElementId> star = walk_star(mesh, v);
   if (is_fixed_vertex(mesh, v, star, options)) return std::nullopt;
   const Point3d origin = mesh.point(v);

@@ -23,6 +23,7 @@
 
 #include <cstdint>
 #include <optional>
+#include <span>
 #include <vector>
 
 #include "certimesh/topology/quality.h"
@@ -36,6 +37,10 @@ struct LocalModificationOptions3 {
   /// Edge removal looks at rings of at most this many tetrahedra (the dynamic programme over
   /// the link's triangulations costs O(n³)).
   std::size_t max_ring = 10;
+  /// When not empty: is_fixed_vertex of every vertex slot, precomputed by the caller (no
+  /// operation here changes it: constrained facets stay, their vertices stay), so a node
+  /// shift need not look up the facets of the star.
+  std::span<const std::uint8_t> fixed_vertices;
 };
 
 /// What a committed operation changed. A node shift keeps the element ids of the star: they
