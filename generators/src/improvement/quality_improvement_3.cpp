@@ -143,7 +143,7 @@ ImprovementStats3 improve_tetrahedra_3(Tetrahedralization3& solid, std::uint32_t
         if (topology::is_constrained_facet(mesh, ElementId{e}, i))
           for (const VertexId v : mesh.facet(ElementId{e}, i)) fixed[v.value] = 1;
     o.fixed_vertices = fixed;
-    const std::uint64_t budget = options.max_operations ? options.max_operations : 4 * mesh.element_count() + 16;
+    const std::uint64_t budget = options.max_operations ? options.max_operations : 3 * queue.size() + 16;
     std::uint64_t committed = 0;
     for (std::uint64_t attempt = 0; attempt < budget && queue.size() > 0; ++attempt) {
       const ElementId e = queue.kth_worst(1);

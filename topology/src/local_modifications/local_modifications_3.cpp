@@ -227,6 +227,7 @@ std::optional<LocalChange3> try_node_shift(TetrahedralMesh3& mesh, VertexId v, c
     }
     return worst;
   };
+  const double wanted = q0 + std::min(options.minimum_shift_gain, q0);
   double best = q0;
   Point3d best_point = origin;
   for (const Point3d& target : {mean, worst_apex})
@@ -240,7 +241,7 @@ std::optional<LocalChange3> try_node_shift(TetrahedralMesh3& mesh, VertexId v, c
         best_point = p;
       }
     }
-  if (!(best > q0)) return std::nullopt;
+  if (!(best > wanted)) return std::nullopt;
   mesh.move_vertex(v, best_point);
   return LocalChange3{star, star};
 }

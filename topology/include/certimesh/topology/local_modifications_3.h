@@ -37,6 +37,10 @@ struct LocalModificationOptions3 {
   /// Edge removal looks at rings of at most this many tetrahedra (the dynamic programme over
   /// the link's triangulations costs O(n³)).
   std::size_t max_ring = 10;
+  /// A node shift counts only when the star's worst quality q rises by more than
+  /// min(minimum_shift_gain, q): a fixed step above, a doubling below. Without it a vertex
+  /// creeps by ever smaller gains, each re-queueing its star (the 2D operations' rule).
+  double minimum_shift_gain = 1e-3;
   /// When not empty: is_fixed_vertex of every vertex slot, precomputed by the caller (no
   /// operation here changes it: constrained facets stay, their vertices stay), so a node
   /// shift need not look up the facets of the star.
@@ -63,7 +67,8 @@ std::optional<LocalChange3> try_edge_removal(TetrahedralMesh3& mesh, ElementId e
 
 /// Node shift of the free vertex v: moves it to the best of a few points towards the centroid
 /// of its link and towards the point that lifts the worst tetrahedron of its star, if every
-/// tetrahedron of the star stays positive (exact) and the star's worst quality rises.
+/// tetrahedron of the star stays positive (exact) and the star's worst quality rises (by more
+/// than options.minimum_shift_gain, see there).
 std::optional<LocalChange3> try_node_shift(TetrahedralMesh3& mesh, VertexId v,
                                            const LocalModificationOptions3& options);
 

@@ -24,8 +24,8 @@ namespace certimesh::generators {
 
 struct ImprovementOptions3 {
   double target_quality = 0.6;       // tetrahedra at or above it are left alone
-  std::uint32_t max_passes = 4;
-  std::uint64_t max_operations = 0;  // attempts per pass; 0 = 4 x the tetrahedron count
+  std::uint32_t max_passes = 2;
+  std::uint64_t max_operations = 0;  // attempts per pass; 0 = 3 x the tetrahedra below the target
 };
 
 struct ImprovementStats3 {
