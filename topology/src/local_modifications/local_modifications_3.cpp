@@ -231,7 +231,7 @@ std::optional<LocalChange3> try_node_shift(TetrahedralMesh3& mesh, VertexId v, c
   double best = q0;
   Point3d best_point = origin;
   for (const Point3d& target : {mean, worst_apex})
-    for (const double step : {1.0, 0.5, 0.25, 0.1}) {
+    for (const double step : {1.0, 0.5, 0.25, 0.1, 0.03, 0.01, 0.003, 0.001}) {  // small: a vertex next to a face
       Point3d p;
       for (int d = 0; d < 3; ++d) p[d] = origin[d] + step * (target[d] - origin[d]);
       if (!std::isfinite(p[0]) || !std::isfinite(p[1]) || !std::isfinite(p[2])) continue;
