@@ -77,7 +77,10 @@ std::string mesh_help() {
          "                       (red 0 to green 1) (default: not written)\n"
          "  --save-domain D.poly also write the domain, for `certimesh check --domain`\n"
          "                       (default: not written)\n"
-         "  --no-improve         skip the quality improvement (default: improve " +
+         "  --no-improve         skip the quality improvement: in 2D the local\n"
+         "                       modifications, in 3D the sliver removal after refinement\n"
+         "                       (edge removals, 2-3 flips, node shifts; the surface is kept\n"
+         "                       exactly) (default: improve " +
          (d.improve ? "on" : "off") +
          ")\n"
          "  --min-angle A        every triangle's smallest angle at least A degrees, 0 < A < 60\n"

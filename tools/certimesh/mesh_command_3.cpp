@@ -58,6 +58,12 @@ void print_summary_3(const generators::MeshResult3& r, const Quality3& q, const 
                 static_cast<unsigned long long>(s.centroids), static_cast<unsigned long long>(s.skinny_left),
                 s.bound_reached ? " (the insertion budget was reached)" : "");
   }
+  const generators::ImprovementStats3& im = r.stats.improvement;
+  if (im.ran)
+    std::printf("improvement: worst %.4f -> %.4f; %llu edge removals, %llu 2-3 flips, %llu node shifts in %llu attempts, %u passes\n",
+                im.worst_before, im.worst_after, static_cast<unsigned long long>(im.edge_removals),
+                static_cast<unsigned long long>(im.flips_2_3), static_cast<unsigned long long>(im.node_shifts),
+                static_cast<unsigned long long>(im.attempts), im.passes);
   double total = 0.0;
   for (const auto& t : r.stats.stages) total += t.seconds;
   std::printf("time: %.3f s (", total);
@@ -80,6 +86,7 @@ int mesh_solid_3(const MeshOptions& options, const io::MeshData& input) {
   o.size = options.size;
   if (options.radius_edge > 0.0) o.max_radius_edge = options.radius_edge;  // else the default, 2
   o.refine_surface = options.refine_surface;
+  o.improve = options.improve;
   o.max_insertions = options.max_steiner;  // the refinement stops there and says so (exit 4)
   const bool points_only = is_point_set(input);
   if (!points_only && !input.tetrahedra.empty()) {

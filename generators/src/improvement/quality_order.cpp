@@ -11,6 +11,7 @@ void QualityOrder::insert(topology::ElementId e, double quality) {
 }
 
 void QualityOrder::erase(topology::ElementId e) {
+  if (e.value >= quality_.size()) return;  // never inserted
   order_.erase({quality_[e.value], e.value});
 }
 

@@ -86,6 +86,10 @@ MeshResult3 mesh_convex_hull_3(const io::MeshData& points, const MeshOptions3& o
     result.stats.refinement = refine_tetrahedra_3(solid, refinement_options(options), progress);
     clock.stop("refinement");
   }
+  if (options.refine && options.improve) {  // unrefined, the Delaunay tetrahedralization is the answer
+    result.stats.improvement = improve_tetrahedra_3(solid, static_cast<std::uint32_t>(points.point_count()));
+    clock.stop("improvement");
+  }
   result.stats.interior_steiner_points = solid.points.size() - result.stats.input_vertices;
   solid_to_mesh_data(solid, points.point_labels, result.mesh);
   return result;
@@ -120,6 +124,10 @@ MeshResult3 mesh_surface_3(Surface3 surface, const MeshOptions3& options, const 
   if (options.refine) {
     result.stats.refinement = refine_tetrahedra_3(solid, refinement_options(options), progress);
     clock.stop("refinement");
+  }
+  if (options.improve) {  // input vertices (the first surface.points.size()) never move
+    result.stats.improvement = improve_tetrahedra_3(solid, static_cast<std::uint32_t>(surface.points.size()));
+    clock.stop("improvement");
   }
   result.stats.unused_input_vertices = check.unused_vertices;
   result.stats.input_vertices = surface.points.size() - check.unused_vertices;

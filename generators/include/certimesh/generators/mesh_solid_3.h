@@ -12,6 +12,8 @@
 //                                                               spread points, BRIO order)
 //   refinement   refine_tetrahedra_3 (tetrahedral_refinement_3.h) O(k) expected for k new
 //                                                               points; each walk bounded
+//   improvement  improve_tetrahedra_3 (quality_improvement_3.h)  O(N log N) per pass, a
+//                                                               bounded number of passes
 #pragma once
 
 #include <cstdint>
@@ -20,6 +22,7 @@
 
 #include "certimesh/generators/delaunay/tetrahedral_refinement_3.h"
 #include "certimesh/generators/domain/surface_3.h"
+#include "certimesh/generators/improvement/quality_improvement_3.h"
 #include "certimesh/generators/progress.h"
 #include "certimesh/io/mesh_data.h"
 
@@ -39,6 +42,9 @@ struct MeshOptions3 {
   /// --refine-surface: Steiner points of the recovery may stay on the surface (each the
   /// rounding of an exact point of its edge or triangle); default: none on it.
   bool refine_surface = false;
+  /// Sliver removal after refinement (quality_improvement_3.h; --no-improve turns it off). A
+  /// point set that is not refined keeps its Delaunay tetrahedralization.
+  bool improve = true;
 };
 
 struct StageTime {
@@ -54,6 +60,7 @@ struct MeshStats3 {
   std::size_t surface_shells = 0, cavities = 0;
   std::size_t hole_tetrahedra = 0;          // removed by hole points (before refinement)
   TetrahedralRefinementStats refinement;
+  ImprovementStats3 improvement;
   std::vector<StageTime> stages;            // in the order they ran
 };
 
