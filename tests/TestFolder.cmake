@@ -1,8 +1,9 @@
 # certimesh_test_folder(PART): every *_test.cpp in the calling folder becomes one GoogleTest
 # executable "<PART>_<name>", linked with certimesh::<PART>, the readers, the predicates, the
 # rational oracle, the fuzz generators and RapidCheck; its CTest names start with "<PART>.".
-# Tests that need CGAL as an oracle are named *_cgal_test.cpp (CGAL compiles slowly: keep it in
-# as few translation units as possible). Extra, non-GoogleTest tests (scripts) go in
+# Tests that need CGAL as an oracle are named *_cgal_test.cpp and call it through
+# tests/support/cgal_reference.h (CGAL compiles slowly: its code is compiled once, in the
+# certimesh_cgal_reference library of tests/CMakeLists.txt; a test file includes no CGAL header). Extra, non-GoogleTest tests (scripts) go in
 # tests.cmake beside the folder's CMakeLists.txt.
 include(GoogleTest)
 
@@ -59,9 +60,7 @@ function(certimesh_test_folder part)
       CERTIMESH_TEST_DATA_DIR="${CMAKE_CURRENT_SOURCE_DIR}"
       CERTIMESH_CLI="$<TARGET_FILE:certimesh>")
     if(name MATCHES "_cgal_test$")
-      find_package(CGAL REQUIRED)
-      pkg_check_modules(MPFR REQUIRED IMPORTED_TARGET mpfr)
-      target_link_libraries(${target} PRIVATE CGAL::CGAL PkgConfig::MPFR)
+      target_link_libraries(${target} PRIVATE certimesh_cgal_reference)
     endif()
     certimesh_warnings(${target})
     certimesh_test_optimization(${target})

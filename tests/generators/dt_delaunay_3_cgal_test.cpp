@@ -6,26 +6,15 @@
 // dt_delaunay_3_checks.h.
 #include <gtest/gtest.h>
 
-#include <CGAL/Delaunay_triangulation_3.h>
-#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
-#include <CGAL/Surface_mesh.h>
-#include <CGAL/Triangulation_vertex_base_with_info_3.h>
-#include <CGAL/convex_hull_3.h>
-
 #include <cmath>
 #include <random>
 
 #include "certimesh/generators/delaunay/delaunay_3.h"
+#include "cgal_reference.h"
 #include "dt_delaunay_3_checks.h"
 
 namespace certimesh::testing {
 namespace {
-
-using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
-using VertexBase = CGAL::Triangulation_vertex_base_with_info_3<std::uint32_t, Kernel>;
-using Tds = CGAL::Triangulation_data_structure_3<VertexBase>;
-using CgalDelaunay = CGAL::Delaunay_triangulation_3<Kernel, Tds>;
-using Mesh = CGAL::Surface_mesh<Kernel::Point_3>;
 
 #if defined(__SANITIZE_ADDRESS__)
 constexpr std::size_t count = 2000;
@@ -42,31 +31,32 @@ std::vector<Tet> certimesh_tetrahedra(const std::vector<P3>& p) {
   return out;
 }
 
+std::vector<cgal_reference::Point3> reference_points(const std::vector<P3>& p) {
+  std::vector<cgal_reference::Point3> out;
+  for (const P3& q : p) out.push_back({q.x, q.y, q.z});
+  return out;
+}
+
+// CGAL's finite cells, by input index.
 std::vector<Tet> cgal_tetrahedra(const std::vector<P3>& p) {
-  std::vector<std::pair<Kernel::Point_3, std::uint32_t>> in;
-  for (std::uint32_t i = 0; i < p.size(); ++i) in.emplace_back(Kernel::Point_3(p[i].x, p[i].y, p[i].z), i);
-  const CgalDelaunay dt(in.begin(), in.end());
+  const auto dt = cgal_reference::delaunay_3(reference_points(p));
   std::vector<Tet> out;
-  for (auto c = dt.finite_cells_begin(); c != dt.finite_cells_end(); ++c)
-    out.push_back({c->vertex(0)->info(), c->vertex(1)->info(), c->vertex(2)->info(), c->vertex(3)->info()});
+  for (const auto& c : dt.tetrahedra) out.push_back({dt.input[c[0]], dt.input[c[1]], dt.input[c[2]], dt.input[c[3]]});
   return out;
 }
 
 // 6 times the exact volume CGAL's convex hull encloses: its triangles coned from one vertex.
 mpq_class cgal_hull_six_volume(const std::vector<P3>& p) {
-  std::vector<Kernel::Point_3> in;
-  for (const auto& q : p) in.emplace_back(q.x, q.y, q.z);
-  Mesh hull;
-  CGAL::convex_hull_3(in.begin(), in.end(), hull);
-  const auto apex = hull.point(*hull.vertices().begin());
-  std::vector<P3> corners{{apex.x(), apex.y(), apex.z()}};
+  const auto hull = cgal_reference::convex_hull_3(reference_points(p));
+  const auto& apex = hull.vertices.front();
+  std::vector<P3> corners{{apex[0], apex[1], apex[2]}};
   std::vector<Tet> cone;
-  for (auto f : hull.faces()) {
+  for (const auto& f : hull.faces) {
     Tet t{0, 0, 0, 0};
     int k = 1;
-    for (auto v : CGAL::vertices_around_face(hull.halfedge(f), hull)) {
-      const auto& q = hull.point(v);
-      corners.push_back({q.x(), q.y(), q.z()});
+    for (const auto v : f) {
+      const auto& q = hull.vertices[v];
+      corners.push_back({q[0], q[1], q[2]});
       if (k < 4) t[k] = static_cast<std::uint32_t>(corners.size() - 1);
       ++k;
     }

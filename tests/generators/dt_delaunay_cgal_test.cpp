@@ -4,49 +4,30 @@
 // constraints, and the same hull edges on degenerate input (grid, points on a circle).
 #include <gtest/gtest.h>
 
-#include <CGAL/Constrained_Delaunay_triangulation_2.h>
-#include <CGAL/Delaunay_triangulation_2.h>
-#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
-#include <CGAL/Triangulation_vertex_base_with_info_2.h>
-
+#include "cgal_reference.h"
 #include "dt_triangulation_checks.h"
 
 namespace certimesh::testing {
 namespace {
 
-using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
-using VertexBase = CGAL::Triangulation_vertex_base_with_info_2<std::uint32_t, Kernel>;
-using DtData = CGAL::Triangulation_data_structure_2<VertexBase>;
-using CgalDelaunay = CGAL::Delaunay_triangulation_2<Kernel, DtData>;
-using CdtVertexBase = CGAL::Triangulation_vertex_base_with_info_2<std::uint32_t, Kernel>;
-using CdtFaceBase = CGAL::Constrained_triangulation_face_base_2<Kernel>;
-using CdtData = CGAL::Triangulation_data_structure_2<CdtVertexBase, CdtFaceBase>;
-using CgalConstrained = CGAL::Constrained_Delaunay_triangulation_2<Kernel, CdtData, CGAL::Exact_predicates_tag>;
-
-template <class Triangulation>
-std::vector<std::pair<Kernel::Point_2, std::uint32_t>> with_ids(const std::vector<Point2>& points) {
-  std::vector<std::pair<Kernel::Point_2, std::uint32_t>> out;
-  for (std::uint32_t i = 0; i < points.size(); ++i) out.emplace_back(Kernel::Point_2(points[i].x, points[i].y), i);
+std::vector<cgal_reference::Point2> reference_points(const std::vector<Point2>& points) {
+  std::vector<cgal_reference::Point2> out;
+  for (const Point2& p : points) out.push_back({p.x, p.y});
   return out;
 }
 
-template <class Triangulation>
-std::set<Triangle> cgal_triangles(const Triangulation& t) {
+// CGAL's finite triangles, by input index.
+std::set<Triangle> cgal_triangles(const cgal_reference::Triangulation2& t) {
   std::set<Triangle> out;
-  for (auto f = t.finite_faces_begin(); f != t.finite_faces_end(); ++f)
-    out.insert(canonical({f->vertex(0)->info(), f->vertex(1)->info(), f->vertex(2)->info()}));
+  for (const auto& f : t.triangles) out.insert(canonical({t.input[f[0]], t.input[f[1]], t.input[f[2]]}));
   return out;
 }
 
-template <class Triangulation>
-std::set<Edge> cgal_hull_edges(const Triangulation& t) {
+// The edges between consecutive vertices around CGAL's infinite vertex, by input index.
+std::set<Edge> cgal_hull_edges(const cgal_reference::Triangulation2& t) {
   std::set<Edge> out;
-  auto c = t.incident_vertices(t.infinite_vertex()), done = c;
-  std::vector<std::uint32_t> hull;
-  do hull.push_back(c->info());
-  while (++c != done);
-  for (std::size_t i = 0; i < hull.size(); ++i) {
-    const auto a = hull[i], b = hull[(i + 1) % hull.size()];
+  for (std::size_t i = 0; i < t.hull.size(); ++i) {
+    const auto a = t.input[t.hull[i]], b = t.input[t.hull[(i + 1) % t.hull.size()]];
     out.insert({std::min(a, b), std::max(a, b)});
   }
   return out;
@@ -68,8 +49,7 @@ std::set<Edge> hull_edges(const std::vector<Triangle>& tris) {
 TEST(dt_cgal, SameTrianglesAsCgalOnRandomPoints) {
   for (std::uint64_t seed = 1; seed <= 3; ++seed) {
     const auto points = uniform_points(20000 / std::size_t(sanitizer_slowdown), seed);
-    const auto ids = with_ids<CgalDelaunay>(points);
-    const CgalDelaunay cgal(ids.begin(), ids.end());
+    const auto cgal = cgal_reference::delaunay_2(reference_points(points));
     EXPECT_EQ(canonical_set(ConstrainedDelaunay2(points).triangles()), cgal_triangles(cgal)) << "seed " << seed;
   }
 }
@@ -88,14 +68,10 @@ TEST(dt_cgal, SameTrianglesAsCgalConstrainedDelaunay) {
 
     ConstrainedDelaunay2 mine(points);
     for (const Edge& e : constraints) mine.insert_constraint(e[0], e[1]);
-    CgalConstrained cgal;
-    std::vector<CgalConstrained::Vertex_handle> handles;
-    for (std::uint32_t i = 0; i < points.size(); ++i) {
-      handles.push_back(cgal.insert(Kernel::Point_2(points[i].x, points[i].y)));
-      handles.back()->info() = i;
-    }
-    for (const Edge& e : constraints) cgal.insert_constraint(handles[e[0]], handles[e[1]]);
-    EXPECT_EQ(canonical_set(mine.triangles()), cgal_triangles(cgal)) << "trial " << trial;
+    std::set<Triangle> cgal;
+    for (const auto& t : cgal_reference::constrained_delaunay_2(reference_points(points), constraints))
+      cgal.insert(canonical(t));
+    EXPECT_EQ(canonical_set(mine.triangles()), cgal) << "trial " << trial;
   }
 }
 
@@ -109,11 +85,10 @@ TEST(dt_cgal, SameHullAsCgalOnGridAndCircle) {
   }
   inputs.push_back(circle);
   for (const auto& points : inputs) {
-    const auto ids = with_ids<CgalDelaunay>(points);
-    const CgalDelaunay cgal(ids.begin(), ids.end());
+    const auto cgal = cgal_reference::delaunay_2(reference_points(points));
     const auto mine = ConstrainedDelaunay2(points).triangles();
     EXPECT_EQ(hull_edges(mine), cgal_hull_edges(cgal));
-    EXPECT_EQ(mine.size(), cgal.number_of_faces());
+    EXPECT_EQ(mine.size(), cgal.triangles.size());
   }
 }
 

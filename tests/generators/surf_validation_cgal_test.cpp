@@ -14,14 +14,6 @@
 #include <gtest/gtest.h>
 #include <rapidcheck/gtest.h>
 
-#include <CGAL/Exact_predicates_exact_constructions_kernel.h>
-#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
-#include <CGAL/Polygon_mesh_processing/orientation.h>
-#include <CGAL/Polygon_mesh_processing/self_intersections.h>
-#include <CGAL/Side_of_triangle_mesh.h>
-#include <CGAL/Surface_mesh.h>
-#include <CGAL/convex_hull_3.h>
-
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
@@ -30,15 +22,11 @@
 #include <vector>
 
 #include "certimesh/generators/domain/surface_validation_3.h"
+#include "cgal_reference.h"
 
 namespace certimesh::generators {
 namespace {
 
-namespace PMP = CGAL::Polygon_mesh_processing;
-using Epick = CGAL::Exact_predicates_inexact_constructions_kernel;
-using Epeck = CGAL::Exact_predicates_exact_constructions_kernel;
-using HullMesh = CGAL::Surface_mesh<Epick::Point_3>;
-using ExactMesh = CGAL::Surface_mesh<Epeck::Point_3>;
 using predicates::Point3;
 using Pairs = std::set<std::pair<std::uint32_t, std::uint32_t>>;
 
@@ -55,24 +43,20 @@ const bool rc_seed_fixed = [] {
 // with `slab`, z is 0 or 1 only: a slab about 1e-6 as thick as it is wide.
 Surface3 random_hull(bool slab = false) {
   const auto n = *rc::gen::inRange<std::size_t>(4, 60);
-  std::vector<Epick::Point_3> in;
+  std::vector<cgal_reference::Point3> in;
   for (std::size_t i = 0; i < n; ++i) {
     auto c = *rc::gen::container<std::vector<int>>(3, rc::gen::inRange(-kRange, kRange));
     if (slab) c[2] = c[2] & 1;
-    in.emplace_back(c[0], c[1], c[2]);
+    in.push_back({double(c[0]), double(c[1]), double(c[2])});
   }
-  HullMesh hull;
-  CGAL::convex_hull_3(in.begin(), in.end(), hull);
-  RC_PRE((CGAL::is_closed(hull) && hull.number_of_faces() >= 4));
-  RC_ASSERT(PMP::is_outward_oriented(hull));
+  const cgal_reference::HullMesh hull = cgal_reference::convex_hull_3(in);
+  RC_PRE((hull.closed && hull.faces.size() >= 4));
+  RC_ASSERT(hull.outward_oriented);
   Surface3 s;
-  for (const auto v : hull.vertices()) s.points.push_back({hull.point(v).x(), hull.point(v).y(), hull.point(v).z()});
-  for (const auto f : hull.faces()) {
-    std::array<std::uint32_t, 3> t{};
-    int k = 0;
-    for (const auto v : CGAL::vertices_around_face(hull.halfedge(f), hull)) t[std::size_t(k++)] = static_cast<std::uint32_t>(v.idx());
-    RC_ASSERT(k == 3);
-    s.triangles.push_back(t);
+  for (const auto& p : hull.vertices) s.points.push_back({p[0], p[1], p[2]});
+  for (const auto& f : hull.faces) {
+    RC_ASSERT(f.size() == 3u);
+    s.triangles.push_back({f[0], f[1], f[2]});
     s.labels.push_back(0);
     s.facet_of.push_back(static_cast<std::uint32_t>(s.facet_of.size()));
   }
@@ -89,17 +73,12 @@ bool touches(const SurfaceProblem& p, std::uint32_t t) { return std::find(p.tria
 
 // CGAL's intersecting pairs of triangles (face i = triangle i), exact kernel.
 Pairs cgal_pairs(const Surface3& s) {
-  ExactMesh m;
-  for (const Point3& p : s.points) m.add_vertex(Epeck::Point_3(p.x, p.y, p.z));
-  for (const auto& t : s.triangles) {
-    const auto f = m.add_face(ExactMesh::Vertex_index(t[0]), ExactMesh::Vertex_index(t[1]), ExactMesh::Vertex_index(t[2]));
-    const bool added = f != ExactMesh::null_face();
-    RC_ASSERT(added);
-  }
-  std::vector<std::pair<ExactMesh::Face_index, ExactMesh::Face_index>> out;
-  PMP::self_intersections(m, std::back_inserter(out));
+  std::vector<cgal_reference::Point3> points;
+  for (const Point3& p : s.points) points.push_back({p.x, p.y, p.z});
+  const auto out = cgal_reference::self_intersections(points, s.triangles);
+  RC_ASSERT(out.has_value());  // every triangle added to CGAL's mesh
   Pairs pairs;
-  for (const auto& [a, b] : out) pairs.insert(std::minmax(static_cast<std::uint32_t>(a.idx()), static_cast<std::uint32_t>(b.idx())));
+  for (const auto& [a, b] : *out) pairs.insert(std::minmax(a, b));
   return pairs;
 }
 
@@ -220,12 +199,12 @@ RC_GTEST_PROP(surf_CgalProperty, TwoHullsIntersectAsCgalSaysOrNest, ()) {
   // Disjoint surfaces: one inside the other or not, by CGAL's exact point location of a vertex
   // of each in the other.
   auto inside = [](const Surface3& surface, std::uint32_t first, std::uint32_t end, const Point3& q) {
-    HullMesh m;
-    for (std::uint32_t v = first; v < end; ++v) m.add_vertex(Epick::Point_3(surface.points[v].x, surface.points[v].y, surface.points[v].z));
+    std::vector<cgal_reference::Point3> points;
+    for (std::uint32_t v = first; v < end; ++v) points.push_back({surface.points[v].x, surface.points[v].y, surface.points[v].z});
+    std::vector<std::array<std::uint32_t, 3>> triangles;
     for (const auto& t : surface.triangles)
-      if (t[0] >= first && t[0] < end) m.add_face(HullMesh::Vertex_index(t[0] - first), HullMesh::Vertex_index(t[1] - first), HullMesh::Vertex_index(t[2] - first));
-    const CGAL::Side_of_triangle_mesh<HullMesh, Epick> side(m);
-    return side(Epick::Point_3(q.x, q.y, q.z)) == CGAL::ON_BOUNDED_SIDE;
+      if (t[0] >= first && t[0] < end) triangles.push_back({t[0] - first, t[1] - first, t[2] - first});
+    return cgal_reference::strictly_inside(points, triangles, {q.x, q.y, q.z});
   };
   const auto end = static_cast<std::uint32_t>(s.points.size());
   const bool nested = inside(s, 0, base, s.points[base]) || inside(s, base, end, s.points[0]);
