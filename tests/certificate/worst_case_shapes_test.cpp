@@ -155,6 +155,25 @@ TEST(WorstCaseShapes, OpenBookAroundAnEdge) {
   EXPECT_EQ(defect_of(nested), "non_manifold_boundary");
 }
 
+// The cone test's line through the spine S N of an open book whose z coordinates are +-1e308:
+// the points it derives (N - S, and S moved along an axis by that length) overflow to
+// infinity, and orient3d refused them, so a valid mesh was reported invalid_domain ("a
+// predicate refused the input") with no domain given. The fan is left undecided then and
+// the box grid decides, as below 32 triangles at a vertex.
+TEST(WorstCaseShapes, OpenBookNearTheLargestDouble) {
+  for (int k : {10, 11}) {  // 30 and 33 boundary triangles at S: grid only, and a fan
+    MeshData m = fuzz::open_book_3d(k);
+    for (std::size_t v = 0; v < m.coordinates.size() / 3; ++v) m.coordinates[3 * v + 2] *= 1e308;
+    ASSERT_TRUE(testing::all_elements_positive(m));
+    const Report r = check_mesh(m);
+    EXPECT_TRUE(r.valid) << k << ": " << r.finding.message;
+    MeshData doubled = m;  // one more tetrahedron strictly inside page 0: refused (OpenBookAroundAnEdge)
+    const io::Index first = append_between(doubled, 2, 3);
+    doubled.tetrahedra.insert(doubled.tetrahedra.end(), {0, first, first + 1, 1});
+    EXPECT_FALSE(check_mesh(doubled).valid) << k;
+  }
+}
+
 // A prism over a star polygon against its TetGen domain: two polygonal facets of 2k corners,
 // cut by the certificate into long triangles whose boxes overlap (the quadratic case of the
 // polygonal facets, proofs/mesh_certificate.md section 6). Certified; the top centre lifted
