@@ -67,6 +67,10 @@ bool try_axis(const MeshView& m, const FacetSet& set, Index v, const std::vector
   };
   ax.r = moved(order[0]);
   ax.s = moved(order[1]);
+  // Near the largest double, c - v or v moved by it can overflow, and orient3d refuses an
+  // infinity (it would throw on a valid mesh): undecided instead, the grid decides.
+  auto finite = [](const Point3& p) { return std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z); };
+  if (!std::isfinite(span) || !finite(ax.r) || !finite(ax.s)) return false;
   ax.sigma = static_cast<int>(predicates::orient3d(ax.v, ax.c, ax.s, ax.r));
   if (ax.sigma == 0) return false;
 

@@ -5,6 +5,7 @@
 #include <gmpxx.h>
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <random>
@@ -15,6 +16,7 @@
 #include "certimesh/predicates/intersection/triangle_triangle_3d.h"
 #include "mesh_oracle.h"
 #include "stages.h"  // detail::first_contact, the 3D embedding check on a triangle soup
+#include "vertex_fans.h"  // detail::fan_is_embedded: which fans a case leaves to the z sweep
 
 namespace certimesh::certificate::test {
 namespace {
@@ -153,6 +155,25 @@ TEST(WorstCaseShapes, OpenBookAroundAnEdge) {
   nested.tetrahedra.insert(nested.tetrahedra.end(), {0, first, first + 1, 1});
   ASSERT_TRUE(testing::all_elements_positive(nested));
   EXPECT_EQ(defect_of(nested), "non_manifold_boundary");
+}
+
+// The cone test's line through the spine S N of an open book whose z coordinates are +-1e308:
+// the points it derives (N - S, and S moved along an axis by that length) overflow to
+// infinity, and orient3d refused them, so a valid mesh was reported invalid_domain ("a
+// predicate refused the input") with no domain given. The fan is left undecided then and
+// the box grid decides, as below 32 triangles at a vertex.
+TEST(WorstCaseShapes, OpenBookNearTheLargestDouble) {
+  for (int k : {10, 11}) {  // 30 and 33 boundary triangles at S: grid only, and a fan
+    MeshData m = fuzz::open_book_3d(k);
+    for (std::size_t v = 0; v < m.coordinates.size() / 3; ++v) m.coordinates[3 * v + 2] *= 1e308;
+    ASSERT_TRUE(testing::all_elements_positive(m));
+    const Report r = check_mesh(m);
+    EXPECT_TRUE(r.valid) << k << ": " << r.finding.message;
+    MeshData doubled = m;  // one more tetrahedron strictly inside page 0: refused (OpenBookAroundAnEdge)
+    const io::Index first = append_between(doubled, 2, 3);
+    doubled.tetrahedra.insert(doubled.tetrahedra.end(), {0, first, first + 1, 1});
+    EXPECT_FALSE(check_mesh(doubled).valid) << k;
+  }
 }
 
 // A prism over a star polygon against its TetGen domain: two polygonal facets of 2k corners,
@@ -368,6 +389,174 @@ TEST(WorstCaseShapes, FansDecidedByTheirConesAgreeWithAllPairs) {
   }
   EXPECT_GT(meeting, 5);
   EXPECT_LT(meeting, 55);
+}
+// How many vertices of the soup in 32 or more triangles the cone test decides: the cases
+// below that mean to reach the z sweep check that they do.
+int fans_decided(const Soup& s) {
+  detail::MeshView m;
+  m.dim = 3;
+  m.xyz = s.xyz.data();
+  m.vertex_count = s.xyz.size() / 3;
+  detail::FacetSet set;
+  set.dim = 3;
+  set.vertices = s.tri;
+  std::vector<std::vector<std::size_t>> at(m.vertex_count);
+  for (std::size_t t = 0; t < s.tri.size() / 3; ++t)
+    for (std::size_t k = 0; k < 3; ++k) at[s.tri[3 * t + k]].push_back(t);
+  int decided = 0;
+  for (std::size_t v = 0; v < m.vertex_count; ++v)
+    decided += at[v].size() >= 32 && detail::fan_is_embedded(m, set, static_cast<io::Index>(v), at[v], [&](std::size_t i, std::size_t j) {
+                 return predicates::triangle_triangle_3d(s.triangle(i), s.triangle(j), predicates::IntersectionMode::exact) == predicates::Overlap::intersect;
+               });
+  return decided;
+}
+
+// Attacks on the cone test and the z sweep (an adversarial review of both): shapes where a
+// wrong cone or a pair left out of the sweep would accept triangles that meet, each against
+// the all-pairs oracle, with the fans the sweep relies on checked to be decided.
+TEST(WorstCaseShapes, FanAttacksAgreeWithAllPairs) {
+  auto expect = [](const Soup& s, bool meet, const char* what, int decided = -1) {
+    ASSERT_EQ(s.brute_force_meet(), meet) << what << ": the oracle";
+    if (decided >= 0) {
+      ASSERT_EQ(fans_decided(s), decided) << what << ": the fans the case is about";
+    }
+    EXPECT_EQ(s.checker_meet(), meet) << what;
+  };
+  const double pi = std::acos(-1.0);
+  {  // a rim winding twice around the axis (no wedge order exists): apart, then crossing
+    for (double inner : {0.5, 1.0}) {
+      Soup s;
+      const io::Index apex = s.point(0, 0, 0);
+      std::vector<io::Index> rim;
+      for (int i = 0; i < 40; ++i) {
+        // the second turn half a step on: on the first's circle (its chords cross the first's),
+        // or steeper, inside the first cone
+        const double r = i < 20 ? 20 : 20 * inner, a = 4 * pi * (i < 20 ? i : i + 0.5) / 40;
+        rim.push_back(s.point(std::round(r * std::cos(a)), std::round(r * std::sin(a)), i < 20 || inner == 1.0 ? 4 : 8));
+      }
+      fan(s, apex, rim, false);
+      expect(s, inner == 1.0, inner == 1.0 ? "helix fan, second turn crossing the first" : "helix fan, second turn inside the first", 0);
+    }
+  }
+  {  // a double cone with the lower rim reversed: the summed normal is exactly 0, no spine
+    Soup s;
+    const io::Index apex = s.point(0, 0, 0);
+    auto down = ring(s, 24, 16, -5);
+    std::reverse(down.begin(), down.end());
+    fan(s, apex, ring(s, 24, 16, 5)), fan(s, apex, down);
+    expect(s, false, "double cone, summed normal 0", 0);
+    s.xyz[3 * down[3] + 2] = 6;  // a lower rim vertex pulled up through the upper cone
+    expect(s, true, "double cone, summed normal 0, one lower triangle through the upper cone");
+  }
+  for (int k : {31, 32}) {  // at the threshold: a cone with one rim vertex past its neighbour's ray
+    Soup s;
+    const io::Index apex = s.point(0, 0, 0);
+    const auto r = ring(s, k, 30, 6);
+    s.xyz[3 * r[5]] = std::round(30 * std::cos(2 * pi * 6.5 / k)), s.xyz[3 * r[5] + 1] = std::round(30 * std::sin(2 * pi * 6.5 / k));
+    fan(s, apex, r);
+    expect(s, true, k == 31 ? "31 triangles, two crossing beyond the apex" : "32 triangles, two crossing beyond the apex", 0);
+  }
+  {  // two cones, the second's apex on the first's rim edge, where the first ends in z and the
+     // second starts (a pair only the plane z = 4 holds); then half a unit outward
+    for (double out : {0.0, 0.5}) {
+      Soup s;
+      const io::Index a = s.point(0, 0, 0);
+      const auto r = ring(s, 40, 1, 4);
+      for (io::Index v : r) s.xyz[3 * v] = std::round(20 * s.xyz[3 * v]), s.xyz[3 * v + 1] = std::round(20 * s.xyz[3 * v + 1]);
+      fan(s, a, r);
+      const double mx = (s.xyz[3 * r[0]] + s.xyz[3 * r[1]]) / 2 + out, my = (s.xyz[3 * r[0] + 1] + s.xyz[3 * r[1] + 1]) / 2;
+      const io::Index b = s.point(mx, my, 4);
+      const auto r2 = ring(s, 40, 1, 8);
+      for (io::Index v : r2) s.xyz[3 * v] = mx + std::round(20 * s.xyz[3 * v]), s.xyz[3 * v + 1] = my + std::round(20 * s.xyz[3 * v + 1]);
+      fan(s, b, r2);
+      expect(s, out == 0, out == 0 ? "a cone's apex on another's rim edge in z = 4" : "a cone's apex beside another's rim edge in z = 4", 2);
+    }
+  }
+  {  // a triangle ending at z = 0 whose top edge passes through a cone's apex (no shared id),
+     // then lowered by half a unit
+    for (double low : {0.0, -0.5}) {
+      Soup s;
+      const io::Index apex = s.point(0, 0, 0);
+      fan(s, apex, ring(s, 40, 20, 5));
+      s.add(s.point(-3, -2, low), s.point(3, 2, low), s.point(1, 0, -4));
+      expect(s, low == 0, low == 0 ? "a triangle's top edge through a cone's apex" : "a triangle's top edge under a cone's apex", 1);
+    }
+  }
+  {  // a flat fan in z = 0 and triangles meeting its plane from below: crossing a fan triangle,
+     // touching a rim edge at its midpoint, and touching nothing
+    Soup s;
+    const io::Index centre = s.point(0, 0, 0);
+    const auto r = ring(s, 40, 1, 0);
+    for (io::Index v : r) s.xyz[3 * v] = std::round(20 * s.xyz[3 * v]), s.xyz[3 * v + 1] = std::round(20 * s.xyz[3 * v + 1]);
+    fan(s, centre, r);
+    Soup cross = s, touch = s, apart = s;
+    cross.add(cross.point(5, 1, 0), cross.point(9, 2, 0), cross.point(7, 1, -3));
+    expect(cross, true, "a triangle's top edge across a flat fan", 1);
+    const double mx = (s.xyz[3 * r[7]] + s.xyz[3 * r[8]]) / 2, my = (s.xyz[3 * r[7] + 1] + s.xyz[3 * r[8] + 1]) / 2;
+    touch.add(touch.point(mx, my, 0), touch.point(2 * mx, 2 * my, -1), touch.point(2 * mx, 2 * my + 1, -3));
+    expect(touch, true, "a triangle touching a flat fan's rim edge at its midpoint", 1);
+    apart.add(apart.point(1.1 * mx, 1.1 * my, 0), apart.point(2 * mx, 2 * my, -1), apart.point(2 * mx, 2 * my + 1, -3));
+    expect(apart, false, "a triangle touching the flat fan's plane beside it", 1);
+  }
+  {  // pages on a spine S N, and a triangle at S whose plane holds the line S N: downward
+     // (meets nothing, but no wedge: the fan stays undecided), upward (overlaps the spine edge)
+    for (double dir : {-1.0, 1.0}) {
+      Soup s;
+      const io::Index south = s.point(0, 0, 0), north = s.point(0, 0, 10);
+      const auto r = ring(s, 40, 20, 0);
+      for (std::size_t i = 0; i < r.size(); i += 2) s.add(south, north, r[i]);
+      fan(s, south, r);
+      s.add(south, s.point(0, 0, 20 * dir), s.point(3, 1, 20 * dir));
+      expect(s, dir > 0, dir > 0 ? "a triangle along the spine edge" : "a triangle on the spine's line, away from the spine", 0);
+    }
+  }
+  {  // one rim point twice (same coordinates, two ids): the fan's triangles touch there
+    Soup s;
+    const io::Index apex = s.point(0, 0, 0);
+    auto r = ring(s, 40, 20, 5);
+    fan(s, apex, r);
+    const std::size_t t = 3 * 7 + 2;  // triangle 7 is (apex, r7, r8): r8 by a copy
+    s.tri[t] = s.point(s.xyz[3 * r[8]], s.xyz[3 * r[8] + 1], s.xyz[3 * r[8] + 2]);
+    expect(s, true, "a rim point twice, with two ids");
+  }
+  {  // a cone's apex inside a flat triangle in z = 0 (a T-junction at the apex)
+    Soup s;
+    const io::Index apex = s.point(0, 0, 0);
+    fan(s, apex, ring(s, 40, 20, 5));
+    s.add(s.point(-3, -2, 0), s.point(3, -2, 0), s.point(0, 3, 0));
+    expect(s, true, "a cone's apex inside a flat triangle", 1);
+  }
+  // Random: a decided cone (or flat fan) and one more triangle with a vertex exactly on a fan
+  // triangle (at a vertex, an edge's midpoint, an interior point), sometimes moved half a
+  // unit, its other vertices on one side of that z or in its plane: ties the sweep's plane
+  // pieces must catch.
+  std::mt19937 rng(7);
+  int meeting = 0;
+  for (int trial = 0; trial < 40; ++trial) {
+    Soup s;
+    const io::Index apex = s.point(0, 0, 0);
+    const auto r = ring(s, 36, 1, trial % 3 == 0 ? 0 : 3);
+    for (io::Index v : r) s.xyz[3 * v] = std::round(16 * s.xyz[3 * v]), s.xyz[3 * v + 1] = std::round(16 * s.xyz[3 * v + 1]);
+    fan(s, apex, r);
+    const io::Index* t = &s.tri[3 * (rng() % 36)];
+    double p[3];
+    const auto where = rng() % 3;
+    for (std::size_t c = 0; c < 3; ++c) {
+      const double a = s.xyz[3 * t[0] + c], b = s.xyz[3 * t[1] + c], d = s.xyz[3 * t[2] + c];
+      p[c] = where == 0 ? b : where == 1 ? (b + d) / 2 : (a + b + 2 * d) / 4;
+    }
+    if (rng() % 3 == 0) p[rng() % 3] += rng() % 2 ? 0.5 : -0.5;
+    const double side = double(rng() % 3) - 1;  // the other vertices below, in, or above z = p's
+    auto off = [&](std::size_t c) { return c == 2 ? p[2] + side * double(rng() % 4) : p[c] + double(rng() % 9) - 4; };
+    const io::Index q = s.point(off(0), off(1), off(2)), w = s.point(off(0), off(1), off(2));
+    s.add(s.point(p[0], p[1], p[2]), q, w);
+    const bool meet = s.brute_force_meet();
+    meeting += meet;
+    ASSERT_EQ(fans_decided(s), 1) << "random touch " << trial;
+    EXPECT_EQ(s.checker_meet(), meet) << "random touch " << trial;
+  }
+  EXPECT_GT(meeting, 5);
+  EXPECT_LT(meeting, 38);
 }
 }  // namespace
 }  // namespace certimesh::certificate::test
