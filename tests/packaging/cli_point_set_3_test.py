@@ -114,7 +114,7 @@ def hull_faces(points, tets):
 def check_refined(certimesh, tmp, node, dt_tets, failures):
     points = [tuple(F(float(x)) for x in p) for p in read_points(node)]  # as the .node says, exactly
     out = os.path.join(tmp, "refined.ele")
-    run = mesh(certimesh, node, out, "--size", "0.15")
+    run = mesh(certimesh, node, out, "--size", "0.25")
     if run.returncode != 0:
         failures.append(f"refined: mesh exited {run.returncode}: {run.stderr}")
         return
@@ -123,7 +123,7 @@ def check_refined(certimesh, tmp, node, dt_tets, failures):
     if written[:len(points)] != points:
         failures.append("refined: the input points are not the first vertices, unchanged")
     if len(written) <= len(points) + 50:
-        failures.append(f"refined: only {len(written) - len(points)} Steiner points at --size 0.15")
+        failures.append(f"refined: only {len(written) - len(points)} Steiner points at --size 0.25")
     volume = check_tets(written, tets, False, failures, "refined")
     if volume != sum(volume6(*(points[v] for v in t)) for t in dt_tets):
         failures.append("refined: the volume is not the hull's")
